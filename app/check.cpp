@@ -1,0 +1,150 @@
+// `collidescope check`: runs a scene's frames through a method and reports the colliding
+// triangle pairs (summary on stderr, --pairs TSV, --stats JSON Lines, exit code).
+
+#include "check_sinks.hpp"
+#include "commands.hpp"
+#include "frame_range.hpp"
+#include "output_stream.hpp"
+#include "progress.hpp"
+
+#include "collidescope/datasets.hpp"
+#include "collidescope/error.hpp"
+#include "collidescope/pipeline.hpp"
+#include "collidescope/scene.hpp"
+
+#include <memory>
+#include <optional>
+
+namespace collidescope::app {
+namespace {
+
+struct CheckOptions {
+    std::vector<std::string> inputs;
+    std::string scene;            ///< built-in scene NAME[:PRESET], instead of inputs
+    std::string method = "brute";
+    bool self = false;            ///< force self-collision on
+    bool no_self = false;         ///< force self-collision off
+    std::string frames;           ///< "" = every frame
+    int threads = 0;              ///< 0 = all hardware threads
+    std::string pairs;            ///< TSV output ("" = none, "-" = stdout)
+    std::string stats;            ///< JSON Lines output ("" = none, "-" = stdout)
+    bool exit_zero = false;
+    bool quiet = false;
+};
+
+constexpr const char* k_footer = R"(Frames (--frames) are numbered from 0 in scene order and the range is half-open:
+  A:B = frames A..B-1, A: = from A to the end, :B = frames 0..B-1, N = frame N alone.
+  An empty range or one past the last frame is an error.
+Outputs (FILE may be - for stdout; logs and progress always go to stderr):
+  --pairs  one line per colliding pair: frame<TAB>objA<TAB>triA<TAB>objB<TAB>triB, objects
+           numbered from 0 in input order, triangles from 0 in file order, each pair once
+           with (objA,triA) < (objB,triB), lines sorted numerically.
+  --stats  JSON Lines, one object per frame: {"frame", "method", "ms": {...}, "counts": {...}}.
+Exit codes: 0 no collisions, 1 collisions found, 2 error (bad input or usage).)";
+
+Scene open_scene(const CheckOptions& options) {
+    if (!options.scene.empty() && !options.inputs.empty()) {
+        throw InputError("give either INPUT files or --scene, not both");
+    }
+    if (!options.scene.empty()) return make_builtin_scene(options.scene);
+    if (options.inputs.empty()) {
+        throw InputError("no input: give INPUT files (mesh, frame pattern or scene.json) or --scene NAME");
+    }
+    return open_inputs(options.inputs);
+}
+
+bool self_collision(const CheckOptions& options, const Scene& scene) {
+    if (options.self) return true;
+    if (options.no_self) return false;
+    return scene.self_collision;
+}
+
+std::string scene_line(const Scene& scene, const FrameRange& range, const PipelineConfig& config) {
+    std::string line = "scene '" + scene.name + "'";
+    if (!scene.preset.empty()) line += " (" + scene.preset + ")";
+    line += ": " + std::to_string(scene.source->object_count()) + " objects, frames " +
+            std::to_string(range.begin) + ".." + std::to_string(range.end - 1) + " of " +
+            std::to_string(scene.source->frame_count()) + ", method " + config.method +
+            ", self-collision " + (config.self_collision ? "on" : "off");
+    return line;
+}
+
+int run_check(const CheckOptions& options) {
+    if (options.pairs == "-" && options.stats == "-") {
+        throw InputError("--pairs and --stats cannot both write to stdout (-)");
+    }
+    const Scene scene = open_scene(options);
+    const FrameRange range = parse_frame_range(options.frames, scene.source->frame_count());
+    const PipelineConfig config{options.method, self_collision(options, scene), options.threads};
+    Pipeline pipeline(config);
+
+    Progress progress(range.end - range.begin);
+    SummaryPrinter summary(progress, options.quiet);
+    pipeline.add_sink(summary);
+    std::optional<OutputStream> pairs_out;
+    std::optional<OutputStream> stats_out;
+    std::optional<PairsWriter> pairs_writer;
+    std::optional<StatsWriter> stats_writer;
+    if (!options.pairs.empty()) pipeline.add_sink(pairs_writer.emplace(pairs_out.emplace(options.pairs).stream()));
+    if (!options.stats.empty()) pipeline.add_sink(stats_writer.emplace(stats_out.emplace(options.stats).stream()));
+
+    // The first frame is read (and validated) before anything is printed, so bad input in a
+    // static mesh gives one line on stderr: the error.
+    Frame frame = scene.source->frame(range.begin);
+    if (!options.quiet) progress.log(scene_line(scene, range, config));
+    for (std::uint32_t f = range.begin;;) {
+        pipeline.process(frame);
+        progress.advance();
+        if (++f == range.end) break;
+        frame = scene.source->frame(f);
+    }
+    progress.finish();
+    if (pairs_out) pairs_out->finish();
+    if (stats_out) stats_out->finish();
+    progress.log(summary.total_line());
+    return summary.colliding_pairs() > 0 && !options.exit_zero ? 1 : 0;
+}
+
+}  // namespace
+
+Command add_check_command(CLI::App& app) {
+    auto options = std::make_shared<CheckOptions>();
+    CLI::App* check = app.add_subcommand(
+        "check", "Find the colliding triangle pairs of every frame; exit 1 when there are any");
+    check->footer(k_footer);
+    check->add_option("inputs", options->inputs,
+                      "Mesh files (static over all frames), frame patterns (cloth.%04d.ply, "
+                      "cloth.####.obj) or scene.json manifests; one object per mesh or pattern")
+        ->type_name("INPUT");
+    check->add_option("--scene", options->scene,
+                      "A built-in scene instead of INPUT files: NAME[:PRESET] (" +
+                          [] {
+                              std::string names;
+                              for (const std::string& name : builtin_scene_names()) {
+                                  names += (names.empty() ? "" : ", ") + name;
+                              }
+                              return names;
+                          }() + ")")
+        ->type_name("NAME[:PRESET]");
+    check->add_option("--method", options->method, "Collision method")
+        ->check(CLI::IsMember(method_names()))
+        ->capture_default_str();
+    CLI::Option* self = check->add_flag("--self", options->self,
+                                        "Self-collision on (default: the scene's setting)");
+    check->add_flag("--no-self", options->no_self, "Self-collision off (default: the scene's setting)")
+        ->excludes(self);
+    check->add_option("--frames", options->frames, "Frames to check: A:B (half-open), A:, :B or N")
+        ->type_name("A:B");
+    check->add_option("--threads", options->threads, "Worker threads (0 = all hardware threads)")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+    check->add_option("--pairs", options->pairs, "Write the colliding pairs as TSV (- = stdout)")
+        ->type_name("FILE");
+    check->add_option("--stats", options->stats, "Write per-frame stats as JSON Lines (- = stdout)")
+        ->type_name("FILE");
+    check->add_flag("--exit-zero", options->exit_zero, "Exit 0 even when collisions are found");
+    check->add_flag("-q,--quiet", options->quiet, "Only the total line on stderr, no per-frame lines");
+    return {check, [options] { return run_check(*options); }};
+}
+
+}  // namespace collidescope::app

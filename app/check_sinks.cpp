@@ -1,0 +1,72 @@
+// The sinks of `collidescope check`.
+
+#include "check_sinks.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <charconv>
+#include <cstdio>
+
+namespace collidescope::app {
+namespace {
+
+// Appends `value` in decimal and then `separator`.
+void append(std::string& line, std::uint32_t value, char separator) {
+    char digits[16];
+    const auto result = std::to_chars(digits, digits + sizeof digits, value);
+    line.append(digits, result.ptr);
+    line.push_back(separator);
+}
+
+std::string format_ms(double ms) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f", ms);
+    return text;
+}
+
+}  // namespace
+
+void PairsWriter::on_frame(const FrameReport& report) {
+    std::string lines;
+    lines.reserve(report.colliding_pairs.size() * 24);
+    for (const TrianglePair& pair : report.colliding_pairs) {
+        append(lines, report.stats.frame, '\t');
+        append(lines, pair.obj_a, '\t');
+        append(lines, pair.tri_a, '\t');
+        append(lines, pair.obj_b, '\t');
+        append(lines, pair.tri_b, '\n');
+    }
+    m_out.write(lines.data(), static_cast<std::streamsize>(lines.size()));
+}
+
+void StatsWriter::on_frame(const FrameReport& report) {
+    nlohmann::ordered_json line;
+    line["frame"] = report.stats.frame;
+    line["method"] = report.stats.method;
+    nlohmann::ordered_json ms = nlohmann::ordered_json::object();
+    for_each_stage(report.stats.ms, [&](const char* name, double value) { ms[name] = value; });
+    nlohmann::ordered_json counts = nlohmann::ordered_json::object();
+    for_each_count(report.stats.counts, [&](const char* name, std::uint64_t value) { counts[name] = value; });
+    line["ms"] = std::move(ms);
+    line["counts"] = std::move(counts);
+    m_out << line.dump() << '\n';
+}
+
+void SummaryPrinter::on_frame(const FrameReport& report) {
+    const std::size_t pairs = report.colliding_pairs.size();
+    ++m_frames;
+    m_frames_colliding += pairs > 0 ? 1 : 0;
+    m_colliding_pairs += pairs;
+    m_total_ms += report.stats.ms.total;
+    if (m_quiet) return;
+    m_progress.log("frame " + std::to_string(report.stats.frame) + ": " + std::to_string(pairs) +
+                   " colliding pairs, " + format_ms(report.stats.ms.total) + " ms");
+}
+
+std::string SummaryPrinter::total_line() const {
+    return "total: " + std::to_string(m_frames) + " frames, " + std::to_string(m_frames_colliding) +
+           " with collisions, " + std::to_string(m_colliding_pairs) + " colliding pairs, " +
+           format_ms(m_total_ms) + " ms";
+}
+
+}  // namespace collidescope::app

@@ -1,0 +1,58 @@
+#pragma once
+// The trace sinks of `collidescope check`: the pairs TSV, the stats JSON Lines and the
+// per-frame summary on stderr. Each sees every frame once, in order, through the engine's
+// TraceSink interface (the recorder of a later issue is one more sink).
+
+#include "progress.hpp"
+
+#include "collidescope/trace.hpp"
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+
+namespace collidescope::app {
+
+/// `--pairs`: one line per colliding pair, `frame\tobjA\ttriA\tobjB\ttriB`, in the engine's
+/// sorted order, so the whole file is sorted numerically when frames come in order.
+class PairsWriter final : public TraceSink {
+public:
+    explicit PairsWriter(std::ostream& out) : m_out(out) {}
+    void on_frame(const FrameReport& report) override;
+
+private:
+    std::ostream& m_out;
+};
+
+/// `--stats`: JSON Lines, one object per frame:
+/// {"frame", "method", "ms": {every StageTimes field}, "counts": {every FrameCounts field}}.
+class StatsWriter final : public TraceSink {
+public:
+    explicit StatsWriter(std::ostream& out) : m_out(out) {}
+    void on_frame(const FrameReport& report) override;
+
+private:
+    std::ostream& m_out;
+};
+
+/// One line per frame on stderr ("frame 12: 3 colliding pairs, 1.234 ms"), unless quiet, and
+/// the totals for the final line.
+class SummaryPrinter final : public TraceSink {
+public:
+    SummaryPrinter(Progress& progress, bool quiet) : m_progress(progress), m_quiet(quiet) {}
+    void on_frame(const FrameReport& report) override;
+
+    /// "total: 60 frames, 36 with collisions, 1234 colliding pairs, 123.456 ms"
+    std::string total_line() const;
+    std::uint64_t colliding_pairs() const { return m_colliding_pairs; }
+
+private:
+    Progress& m_progress;
+    bool m_quiet;
+    std::uint64_t m_frames = 0;
+    std::uint64_t m_frames_colliding = 0;
+    std::uint64_t m_colliding_pairs = 0;
+    double m_total_ms = 0;
+};
+
+}  // namespace collidescope::app

@@ -1,0 +1,80 @@
+#pragma once
+/// Scenes: objects with triangles and per-frame vertex positions (engine/src/scene).
+///
+/// A scene hands out frames one at a time through a FrameSource, so long animations and
+/// large meshes never need to sit in memory whole. Topology is shared between frames and
+/// changes only when a frame's triangles differ (a fractured mesh); its revision says so.
+
+#include "collidescope/mesh.hpp"
+#include "collidescope/types.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace collidescope {
+
+/// The triangles of one object, shared by every frame until the topology changes.
+struct Topology {
+    std::vector<TriIndices> triangles;
+    std::uint32_t vertex_count = 0;
+    /// Increases whenever an object's triangles change; equal revisions mean equal topology.
+    std::uint64_t revision = 0;
+};
+
+/// One object in one frame.
+struct ObjectFrame {
+    std::shared_ptr<const Topology> topology;
+    std::vector<Vec3> vertices;  ///< size == topology->vertex_count
+
+    std::array<Vec3, 3> corners(std::uint32_t tri) const {
+        const TriIndices& t = topology->triangles[tri];
+        return {vertices[t[0]], vertices[t[1]], vertices[t[2]]};
+    }
+    std::size_t triangle_count() const { return topology->triangles.size(); }
+};
+
+/// All objects of one frame, in input order.
+struct Frame {
+    std::uint32_t index = 0;  ///< frame number, from 0
+    std::vector<ObjectFrame> objects;
+};
+
+/// Hands out the frames of an animation. Not thread-safe: one caller at a time.
+class FrameSource {
+public:
+    virtual ~FrameSource() = default;
+    virtual std::uint32_t frame_count() const = 0;
+    virtual std::uint32_t object_count() const = 0;
+    virtual std::string object_name(std::uint32_t object) const = 0;
+    /// Frame `index` (< frame_count()). Throws InputError on bad input.
+    virtual Frame frame(std::uint32_t index) = 0;
+};
+
+/// A scene: named frames plus what the pipeline needs to know about them.
+struct Scene {
+    std::string name;
+    std::string preset;               ///< generator preset ("" for files)
+    std::uint64_t seed = 0;           ///< generator seed (0 for files)
+    bool self_collision = false;      ///< default for --self (a manifest or data set may set it)
+    std::shared_ptr<FrameSource> source;
+};
+
+/// A source over frames held in memory (tests, benchmarks, generators that precompute).
+/// Topology revisions are assigned here: consecutive frames whose triangles are equal share
+/// one Topology.
+std::shared_ptr<FrameSource> make_memory_source(std::vector<std::string> object_names,
+                                                std::vector<std::vector<MeshData>> frames);
+
+/// Opens the command line's inputs as one scene. Each input is a mesh file (static over all
+/// frames), a frame pattern (`cloth.%04d.ply` or `cloth.####.obj`, the consecutive existing
+/// frames from the first match), or a `scene.json` manifest. Objects are numbered in input
+/// order (a manifest contributes its objects in its order). Throws InputError on bad input
+/// (missing files, patterns matching nothing, objects with different frame counts, a
+/// malformed manifest).
+Scene open_inputs(std::span<const std::string> inputs);
+
+}  // namespace collidescope

@@ -1,0 +1,78 @@
+#pragma once
+/// Per-frame statistics: what every stage did and what it cost.
+///
+/// Each stage fills its own fields; fields of stages a method does not run stay zero. The
+/// recorder stores exactly these structs, the decision system reads them, and `check --stats`
+/// prints them; nothing is measured twice.
+
+#include <cstdint>
+#include <string>
+
+namespace collidescope {
+
+/// Milliseconds per stage of one frame. `cull` is everything between the object level and
+/// the narrow phase; refit/rebuild/traversal/gpu_* break it down for the methods that run them.
+struct StageTimes {
+    double update = 0;           ///< take the new positions, object boxes
+    double object_level = 0;     ///< sweep and prune over object boxes
+    double cull = 0;             ///< method's culling, total
+    double refit = 0;            ///< AABB refit (Mode 1)
+    double rebuild = 0;          ///< AABB build/rebuild on the engine thread
+    double traversal = 0;        ///< tree-vs-tree and self traversal
+    double gpu_render = 0;       ///< GPU cull passes (Mode 2)
+    double gpu_readback = 0;     ///< reading query results / flags back
+    double final_hierarchy = 0;  ///< hierarchy over the GPU survivors (thesis's R)
+    double narrow = 0;           ///< exact triangle-triangle tests
+    double total = 0;            ///< the whole frame
+};
+
+/// Counts of one frame.
+struct FrameCounts {
+    std::uint64_t triangles = 0;         ///< triangles in the frame, all objects
+    std::uint64_t object_pairs = 0;      ///< object pairs whose boxes overlap (+ self objects)
+    std::uint64_t box_tests = 0;         ///< triangle or node box tests by the method
+    std::uint64_t candidate_pairs = 0;   ///< pairs that survived culling
+    std::uint64_t exact_tests = 0;       ///< triangle-triangle tests run
+    std::uint64_t exact_fallbacks = 0;   ///< predicate calls the float filter could not decide
+    std::uint64_t colliding_pairs = 0;   ///< confirmed pairs
+};
+
+/// Calls `visit(name, milliseconds)` for every StageTimes field in declaration order. This
+/// is the one list of stage names: `check --stats`, the recorder and the docs all use it.
+template <class Visitor>
+void for_each_stage(const StageTimes& ms, Visitor&& visit) {
+    visit("update", ms.update);
+    visit("object_level", ms.object_level);
+    visit("cull", ms.cull);
+    visit("refit", ms.refit);
+    visit("rebuild", ms.rebuild);
+    visit("traversal", ms.traversal);
+    visit("gpu_render", ms.gpu_render);
+    visit("gpu_readback", ms.gpu_readback);
+    visit("final_hierarchy", ms.final_hierarchy);
+    visit("narrow", ms.narrow);
+    visit("total", ms.total);
+}
+
+/// Calls `visit(name, count)` for every FrameCounts field in declaration order (the one list
+/// of count names, like for_each_stage).
+template <class Visitor>
+void for_each_count(const FrameCounts& counts, Visitor&& visit) {
+    visit("triangles", counts.triangles);
+    visit("object_pairs", counts.object_pairs);
+    visit("box_tests", counts.box_tests);
+    visit("candidate_pairs", counts.candidate_pairs);
+    visit("exact_tests", counts.exact_tests);
+    visit("exact_fallbacks", counts.exact_fallbacks);
+    visit("colliding_pairs", counts.colliding_pairs);
+}
+
+/// Everything one frame reports.
+struct FrameStats {
+    std::uint32_t frame = 0;
+    std::string method;  ///< the method that produced this frame's pairs
+    StageTimes ms;
+    FrameCounts counts;
+};
+
+}  // namespace collidescope

@@ -1,0 +1,208 @@
+// orient3d and orient2d: a static floating-point filter, then an exact fallback.
+//
+// Filter: the determinant in doubles plus an error bound proportional to its permanent
+// (Shewchuk 1997, orient3d errboundA = (7 + 56 eps) eps, orient2d ccwerrboundA =
+// (3 + 16 eps) eps); we use 8 eps and 4 eps plus an absolute term, which also covers
+// gradual underflow in the products. Exact path: the determinant as an expansion when every
+// coordinate's magnitude lies in [kSafeMin, kSafeMax] (or is zero), where
+// no intermediate can underflow or overflow; GMP rationals otherwise.
+
+#include "collidescope/geometry.hpp"
+#include "geometry/expansion.hpp"
+
+#include <gmp.h>
+
+#include <cmath>
+#include <limits>
+
+namespace collidescope {
+namespace {
+
+thread_local PredicateCounters t_counters;
+
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon() / 2;  // 2^-53
+constexpr double kOrient3dBound = 8.0 * kEpsilon;
+constexpr double kOrient2dBound = 4.0 * kEpsilon;
+constexpr double kAbsoluteBound = 0x1p-960;  // far above any underflow error in the filter
+// Coordinates with magnitude in [2^-200, 2^200] are multiples of 2^-252, so a product of
+// three differences is a multiple of 2^-756 and below 2^603: every expansion term is exact.
+constexpr double kSafeMin = 0x1p-200;
+constexpr double kSafeMax = 0x1p200;
+
+
+bool in_safe_range(double x) {
+    const double m = std::fabs(x);
+    return m == 0 || (m >= kSafeMin && m <= kSafeMax);
+}
+
+/// Exact sign of the 3x3 determinant of rows[i][k] - shift[k] (shift = 0 when null), with
+/// GMP rationals: any finite doubles, no underflow or overflow possible.
+int determinant3_sign_gmp(const double rows[3][3], const double* shift) {
+    mpq_t m[3][3], offset, t0, t1, det;
+    mpq_inits(offset, t0, t1, det, nullptr);
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) {
+            mpq_init(m[i][k]);
+            mpq_set_d(m[i][k], rows[i][k]);
+            if (shift) {
+                mpq_set_d(offset, shift[k]);
+                mpq_sub(m[i][k], m[i][k], offset);
+            }
+        }
+    for (int k = 0; k < 3; ++k) {  // expansion along row 0, cyclic cofactors
+        const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+        mpq_mul(t0, m[1][k1], m[2][k2]);
+        mpq_mul(t1, m[1][k2], m[2][k1]);
+        mpq_sub(t0, t0, t1);
+        mpq_mul(t0, t0, m[0][k]);
+        mpq_add(det, det, t0);
+    }
+    const int s = mpq_sgn(det);
+    for (auto& row : m)
+        for (auto& cell : row) mpq_clear(cell);
+    mpq_clears(offset, t0, t1, det, nullptr);
+    return s;
+}
+
+/// The 3x3 determinant with rows (adx, ady, adz) etc. when every entry is an exact double:
+/// each 2x2 minor is a 4-term expansion, each scaled minor 8 terms, the sum 24 terms.
+int determinant3_sign_exact_entries(const double r[3][3]) {
+    double terms[3][8];
+    int counts[3];
+    for (int k = 0; k < 3; ++k) {  // cyclic cofactor expansion along row 0
+        const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+        double p[2], q[2], minor[4];
+        exact::two_product(r[1][k1], r[2][k2], p[1], p[0]);
+        exact::two_product(r[1][k2], r[2][k1], q[1], q[0]);
+        exact::negate(q, 2);
+        const int n = exact::sum(p, 2, q, 2, minor);
+        counts[k] = exact::scale(minor, n, r[0][k], terms[k]);
+    }
+    double partial[16], total[24];
+    const int n01 = exact::sum(terms[0], counts[0], terms[1], counts[1], partial);
+    const int n = exact::sum(partial, n01, terms[2], counts[2], total);
+    return exact::sign(total, n);
+}
+
+/// The same determinant when the entries are 2-term expansions e[i][k] (value e[..][0] +
+/// e[..][1]): minors up to 16 terms, scaled minors 64, the sum 192.
+int determinant3_sign_expansion_entries(const double e[3][3][2]) {
+    double scratch[256], terms[3][64];
+    int counts[3];
+    for (int k = 0; k < 3; ++k) {
+        const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+        double p[8], q[8], minor[16];
+        const int np = exact::product(e[1][k1], 2, e[2][k2], 2, p, scratch);
+        const int nq = exact::product(e[1][k2], 2, e[2][k1], 2, q, scratch);
+        exact::negate(q, nq);
+        const int n = exact::sum(p, np, q, nq, minor);
+        counts[k] = exact::product(minor, n, e[0][k], 2, terms[k], scratch);
+    }
+    double partial[128], total[192];
+    const int n01 = exact::sum(terms[0], counts[0], terms[1], counts[1], partial);
+    const int n = exact::sum(partial, n01, terms[2], counts[2], total);
+    return exact::sign(total, n);
+}
+
+int orient3d_exact(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+    bool safe = true;
+    for (const Vec3* p : {&a, &b, &c, &d})
+        for (int k = 0; k < 3; ++k) safe = safe && in_safe_range((*p)[k]);
+    const Vec3* rows[3] = {&a, &b, &c};
+    if (!safe) {
+        const double m[3][3] = {{a.x(), a.y(), a.z()}, {b.x(), b.y(), b.z()},
+                                {c.x(), c.y(), c.z()}};
+        const double shift[3] = {d.x(), d.y(), d.z()};
+        return determinant3_sign_gmp(m, shift);
+    }
+    // Differences as 2-term expansions; most inputs (float32 data) subtract exactly.
+    double e[3][3][2];
+    bool exact_differences = true;
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) {
+            exact::two_diff((*rows[i])[k], d[k], e[i][k][1], e[i][k][0]);
+            exact_differences = exact_differences && e[i][k][0] == 0;
+        }
+    if (exact_differences) {
+        // A zero row or column (a point equal to d; all four points in an axis-aligned
+        // plane, as flat cloth at rest) makes the determinant exactly zero.
+        for (int i = 0; i < 3; ++i) {
+            if (e[i][0][1] == 0 && e[i][1][1] == 0 && e[i][2][1] == 0) return 0;
+            if (e[0][i][1] == 0 && e[1][i][1] == 0 && e[2][i][1] == 0) return 0;
+        }
+        double r[3][3];
+        for (int i = 0; i < 3; ++i)
+            for (int k = 0; k < 3; ++k) r[i][k] = e[i][k][1];
+        return determinant3_sign_exact_entries(r);
+    }
+    return determinant3_sign_expansion_entries(e);
+}
+
+int orient2d_exact(double ax, double ay, double bx, double by, double cx, double cy) {
+    const bool safe = in_safe_range(ax) && in_safe_range(ay) && in_safe_range(bx) &&
+                      in_safe_range(by) && in_safe_range(cx) && in_safe_range(cy);
+    if (!safe) {
+        const double rows[3][3] = {{ax, ay, 1}, {bx, by, 1}, {cx, cy, 1}};
+        return determinant3_sign_gmp(rows, nullptr);
+    }
+    double acx[2], acy[2], bcx[2], bcy[2];
+    exact::two_diff(ax, cx, acx[1], acx[0]);
+    exact::two_diff(ay, cy, acy[1], acy[0]);
+    exact::two_diff(bx, cx, bcx[1], bcx[0]);
+    exact::two_diff(by, cy, bcy[1], bcy[0]);
+    double scratch[16], left[8], right[8], det[16];
+    const int nl = exact::product(acx, 2, bcy, 2, left, scratch);
+    const int nr = exact::product(acy, 2, bcx, 2, right, scratch);
+    exact::negate(right, nr);
+    return exact::sign(det, exact::sum(left, nl, right, nr, det));
+}
+
+}  // namespace
+
+int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+    const double adx = a.x() - d.x(), bdx = b.x() - d.x(), cdx = c.x() - d.x();
+    const double ady = a.y() - d.y(), bdy = b.y() - d.y(), cdy = c.y() - d.y();
+    const double adz = a.z() - d.z(), bdz = b.z() - d.z(), cdz = c.z() - d.z();
+    const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+    const double cdxady = cdx * ady, adxcdy = adx * cdy;
+    const double adxbdy = adx * bdy, bdxady = bdx * ady;
+    const double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+    const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
+                             (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
+                             (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
+    const double bound = kOrient3dBound * permanent + kAbsoluteBound;
+    // Comparisons with NaN or infinity (overflow) fail and fall through to the exact path.
+    if (det > bound && permanent < std::numeric_limits<double>::max()) {
+        ++t_counters.filtered;
+        return 1;
+    }
+    if (-det > bound && permanent < std::numeric_limits<double>::max()) {
+        ++t_counters.filtered;
+        return -1;
+    }
+    ++t_counters.exact;
+    return orient3d_exact(a, b, c, d);
+}
+
+int orient2d(const Vec3& a, const Vec3& b, const Vec3& c, int drop) {
+    const int i = (drop + 1) % 3, j = (drop + 2) % 3;
+    const double detleft = (a[i] - c[i]) * (b[j] - c[j]);
+    const double detright = (a[j] - c[j]) * (b[i] - c[i]);
+    const double det = detleft - detright;
+    const double permanent = std::fabs(detleft) + std::fabs(detright);
+    const double bound = kOrient2dBound * permanent + kAbsoluteBound;
+    if (det > bound && permanent < std::numeric_limits<double>::max()) {
+        ++t_counters.filtered;
+        return 1;
+    }
+    if (-det > bound && permanent < std::numeric_limits<double>::max()) {
+        ++t_counters.filtered;
+        return -1;
+    }
+    ++t_counters.exact;
+    return orient2d_exact(a[i], a[j], b[i], b[j], c[i], c[j]);
+}
+
+PredicateCounters predicate_counters() { return t_counters; }
+
+}  // namespace collidescope

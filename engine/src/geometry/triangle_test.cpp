@@ -1,0 +1,43 @@
+// The exact closed triangle-triangle test (DESIGN.md, "What collide means").
+//
+// Two closed triangles share a point iff an edge of one meets the other. Non-coplanar: the
+// intersection is a segment of T1 ∩ plane(T2) clipped by T2, and each of its ends lies on
+// the boundary of T1 or of T2, i.e. on an edge. Coplanar: two convex polygons meet iff
+// their boundaries cross or one contains the other, whose edges then lie inside. A
+// degenerate triangle is covered by its edges, so the same statement holds for segments and
+// points. A plane-side rejection first skips most separated pairs with four orientation
+// signs reused by the edge tests.
+
+#include "collidescope/geometry.hpp"
+#include "geometry/contact_tests.hpp"
+
+namespace collidescope {
+namespace {
+
+bool strictly_one_side(const int s[3]) {
+    return (s[0] > 0 && s[1] > 0 && s[2] > 0) || (s[0] < 0 && s[1] < 0 && s[2] < 0);
+}
+
+}  // namespace
+
+bool triangles_intersect(const Vec3& a0, const Vec3& a1, const Vec3& a2,
+                         const Vec3& b0, const Vec3& b1, const Vec3& b2) {
+    // Sides of A's corners relative to B's plane, and of B's corners relative to A's plane
+    // (all zero for a degenerate triangle, which never rejects).
+    const int side_a[3] = {orient3d(b0, b1, b2, a0), orient3d(b0, b1, b2, a1),
+                           orient3d(b0, b1, b2, a2)};
+    if (strictly_one_side(side_a)) return false;
+    const int side_b[3] = {orient3d(a0, a1, a2, b0), orient3d(a0, a1, a2, b1),
+                           orient3d(a0, a1, a2, b2)};
+    if (strictly_one_side(side_b)) return false;
+
+    using contact::segment_intersects_triangle;
+    return segment_intersects_triangle(a0, a1, side_a[0], side_a[1], b0, b1, b2) ||
+           segment_intersects_triangle(a1, a2, side_a[1], side_a[2], b0, b1, b2) ||
+           segment_intersects_triangle(a2, a0, side_a[2], side_a[0], b0, b1, b2) ||
+           segment_intersects_triangle(b0, b1, side_b[0], side_b[1], a0, a1, a2) ||
+           segment_intersects_triangle(b1, b2, side_b[1], side_b[2], a0, a1, a2) ||
+           segment_intersects_triangle(b2, b0, side_b[2], side_b[0], a0, a1, a2);
+}
+
+}  // namespace collidescope

@@ -1,0 +1,39 @@
+// The methods `--method` accepts, by name. A new method adds one line to k_methods.
+
+#include "brute/brute_method.hpp"
+
+#include "collidescope/pipeline.hpp"
+
+#include <stdexcept>
+
+namespace collidescope {
+namespace {
+
+struct MethodEntry {
+    std::string_view name;
+    std::unique_ptr<Method> (*make)();
+};
+
+// In the order method_names() lists them.
+constexpr MethodEntry k_methods[] = {
+    {"brute", &make_brute_method},
+};
+
+}  // namespace
+
+std::vector<std::string> method_names() {
+    std::vector<std::string> names;
+    for (const MethodEntry& entry : k_methods) names.emplace_back(entry.name);
+    return names;
+}
+
+std::unique_ptr<Method> make_method(std::string_view name) {
+    for (const MethodEntry& entry : k_methods) {
+        if (entry.name == name) return entry.make();
+    }
+    std::string known;
+    for (const MethodEntry& entry : k_methods) known += (known.empty() ? "" : ", ") + std::string(entry.name);
+    throw std::invalid_argument("unknown method '" + std::string(name) + "' (known: " + known + ")");
+}
+
+}  // namespace collidescope

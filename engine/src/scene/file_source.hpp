@@ -1,0 +1,34 @@
+#pragma once
+// Frames read from mesh files, lazily (engine/src/scene, private).
+//
+// open_inputs turns the command line into FileObjects; the FileSource reads frame i's files
+// when frame(i) is asked for. A static object's file is read once and repeated every frame.
+
+#include "collidescope/scene.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace collidescope {
+
+/// One object of a file scene.
+struct FileObject {
+    std::string name;                          ///< object name (file stem, pattern without number)
+    std::string origin;                        ///< the file or pattern as given, for messages
+    std::vector<std::filesystem::path> files;  ///< one per frame; exactly one when is_static
+    bool is_static = false;                    ///< the same mesh in every frame
+};
+
+/// A FrameSource over `objects` with `frame_count` frames (every sequence object holds at
+/// least that many files). Each frame's meshes are read and validated on demand; a frame whose
+/// triangles equal the object's previous ones shares that Topology (same revision).
+std::shared_ptr<FrameSource> make_file_source(std::vector<FileObject> objects,
+                                              std::uint32_t frame_count);
+
+/// A revision number no other Topology of this process has had (thread-safe).
+std::uint64_t next_topology_revision();
+
+}  // namespace collidescope

@@ -1,0 +1,204 @@
+// open_inputs: the command line's inputs (mesh files, frame patterns, scene.json manifests)
+// as one scene over a lazily reading FileSource.
+//
+// Manifest format: {"name": str, "frames": F, "objects": [{"name": str, "pattern": str}],
+// "self": bool}. Only "objects" and each object's "pattern" are required; "name" defaults to
+// the manifest's directory name (objects: the pattern's name), "self" to false. Patterns are
+// relative to the manifest's directory. When "frames" is given the scene uses the first F
+// frames of every sequence (a manifest may describe part of a longer cache); a sequence with
+// fewer than F frames is an error. Without it, the frames found are used.
+
+#include "scene/file_source.hpp"
+#include "scene/frame_pattern.hpp"
+
+#include "collidescope/error.hpp"
+#include "collidescope/scene.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <limits>
+#include <optional>
+
+namespace collidescope {
+namespace {
+
+using nlohmann::json;
+
+/// What the inputs add up to, before the FileSource is made.
+struct SceneInputs {
+    std::vector<FileObject> objects;
+    std::optional<std::string> manifest_name;
+    bool self_collision = false;
+};
+
+// A mesh file (static) or a frame pattern (one file per frame), named `name` or after the file.
+FileObject open_object(const std::string& spec, const std::string& name) {
+    FileObject object;
+    object.origin = spec;
+    const std::filesystem::path path(spec);
+    std::error_code error;
+    if (std::filesystem::is_regular_file(path, error)) {
+        object.is_static = true;
+        object.files = {path};
+    } else if (const std::optional<FramePattern> pattern = parse_frame_pattern(spec)) {
+        object.files = expand_frame_pattern(*pattern, spec);
+    } else {
+        throw InputError(spec + ": no such file");
+    }
+    object.name = name.empty() ? object_name_from(path.filename().string()) : name;
+    return object;
+}
+
+// Reads a manifest's JSON and checks the keys one by one, naming the first bad one.
+class ManifestReader {
+public:
+    explicit ManifestReader(const std::filesystem::path& file) : m_file(file) {}
+
+    void read(SceneInputs& inputs) {
+        const json doc = parse();
+        if (!doc.is_object()) fail("", "expected a JSON object at the top level");
+        const std::optional<std::string> name = optional_string(doc, "name", "name");
+        const std::optional<std::uint32_t> frames = optional_frames(doc);
+        if (const json* self = find(doc, "self")) {
+            if (!self->is_boolean()) wrong_type("self", "a boolean", *self);
+            inputs.self_collision = inputs.self_collision || self->get<bool>();
+        }
+        const json* objects = find(doc, "objects");
+        if (objects == nullptr) fail("objects", "missing key");
+        if (!objects->is_array() || objects->empty()) wrong_type("objects", "a non-empty array", *objects);
+        for (std::size_t i = 0; i < objects->size(); ++i) {
+            inputs.objects.push_back(read_object((*objects)[i], i, frames));
+        }
+        if (!inputs.manifest_name) inputs.manifest_name = name.value_or(default_name());
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+        throw InputError(m_file.string() + ": " + (key.empty() ? "" : key + ": ") + what);
+    }
+
+    [[noreturn]] void wrong_type(const std::string& key, const std::string& expected,
+                                 const json& value) const {
+        fail(key, "expected " + expected + ", got " + value.type_name() + " " + value.dump());
+    }
+
+    json parse() const {
+        const std::vector<std::byte> bytes = read_file_bytes(m_file);
+        const char* text = reinterpret_cast<const char*>(bytes.data());
+        try {
+            return json::parse(text, text + bytes.size());
+        } catch (const json::exception& error) {
+            fail("", std::string("malformed JSON (") + error.what() + ")");
+        }
+    }
+
+    static const json* find(const json& object, const char* key) {
+        const auto it = object.find(key);
+        return it == object.end() ? nullptr : &*it;
+    }
+
+    std::optional<std::string> optional_string(const json& object, const char* key,
+                                               const std::string& path) const {
+        const json* value = find(object, key);
+        if (value == nullptr) return std::nullopt;
+        if (!value->is_string()) wrong_type(path, "a string", *value);
+        return value->get<std::string>();
+    }
+
+    std::optional<std::uint32_t> optional_frames(const json& doc) const {
+        const json* frames = find(doc, "frames");
+        if (frames == nullptr) return std::nullopt;
+        const bool positive = frames->is_number_unsigned() && frames->get<std::uint64_t>() > 0 &&
+                              frames->get<std::uint64_t>() <= std::numeric_limits<std::uint32_t>::max();
+        if (!positive) wrong_type("frames", "a positive integer", *frames);
+        return frames->get<std::uint32_t>();
+    }
+
+    FileObject read_object(const json& entry, std::size_t index,
+                           std::optional<std::uint32_t> frames) const {
+        const std::string path = "objects[" + std::to_string(index) + "]";
+        if (!entry.is_object()) wrong_type(path, "an object", entry);
+        const std::optional<std::string> pattern = optional_string(entry, "pattern", path + ".pattern");
+        if (!pattern) fail(path + ".pattern", "missing key");
+        const std::string name = optional_string(entry, "name", path + ".name").value_or("");
+        const std::filesystem::path spec = m_file.parent_path() / *pattern;
+        FileObject object = open_object(spec.string(), name);
+        if (frames && !object.is_static) use_frames(object, *frames);
+        return object;
+    }
+
+    void use_frames(FileObject& object, std::uint32_t frames) const {
+        if (object.files.size() < frames) {
+            fail("frames", "asks for " + std::to_string(frames) + " frames but object '" +
+                               object.name + "' (" + object.origin + ") has " +
+                               std::to_string(object.files.size()));
+        }
+        object.files.resize(frames);
+    }
+
+    std::string default_name() const {
+        const std::string directory = std::filesystem::absolute(m_file).parent_path().filename().string();
+        return directory.empty() ? object_name_from(m_file.filename().string()) : directory;
+    }
+
+    std::filesystem::path m_file;
+};
+
+bool is_manifest(const std::string& input) {
+    std::string extension = std::filesystem::path(input).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension == ".json";
+}
+
+// The frame count all sequences share (1 when every object is static).
+std::uint32_t common_frame_count(const std::vector<FileObject>& objects) {
+    const FileObject* first = nullptr;
+    for (const FileObject& object : objects) {
+        if (object.is_static) continue;
+        if (first == nullptr) {
+            first = &object;
+        } else if (object.files.size() != first->files.size()) {
+            throw InputError("objects '" + first->name + "' (" + first->origin + ": " +
+                             std::to_string(first->files.size()) + " frames) and '" + object.name +
+                             "' (" + object.origin + ": " + std::to_string(object.files.size()) +
+                             " frames) have different frame counts");
+        }
+    }
+    if (first == nullptr) return 1;
+    if (first->files.size() > std::numeric_limits<std::uint32_t>::max()) {
+        throw InputError(first->origin + ": too many frames");
+    }
+    return static_cast<std::uint32_t>(first->files.size());
+}
+
+std::string scene_name(const SceneInputs& inputs) {
+    if (inputs.manifest_name) return *inputs.manifest_name;
+    std::string name;
+    for (const FileObject& object : inputs.objects) name += (name.empty() ? "" : "+") + object.name;
+    return name;
+}
+
+}  // namespace
+
+Scene open_inputs(std::span<const std::string> inputs) {
+    if (inputs.empty()) throw InputError("no input given (a mesh file, frame pattern or scene.json)");
+    SceneInputs collected;
+    for (const std::string& input : inputs) {
+        if (is_manifest(input)) {
+            ManifestReader(input).read(collected);
+        } else {
+            collected.objects.push_back(open_object(input, ""));
+        }
+    }
+    const std::uint32_t frames = common_frame_count(collected.objects);
+    Scene scene;
+    scene.name = scene_name(collected);
+    scene.self_collision = collected.self_collision;
+    scene.source = make_file_source(std::move(collected.objects), frames);
+    return scene;
+}
+
+}  // namespace collidescope

@@ -1,0 +1,49 @@
+#pragma once
+// Helpers of the end-to-end tests: run the built `collidescope` (COLLIDESCOPE_BIN) with
+// arguments in a directory, capture stdout, stderr and the exit code; parse the pairs TSV;
+// write scenes as frame-pattern PLY files.
+
+#include "collidescope/scene.hpp"
+#include "collidescope/types.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace collidescope::testing {
+
+/// What one run of the command line produced.
+struct CliResult {
+    int exit_code = -1;
+    std::string out;  ///< stdout
+    std::string err;  ///< stderr
+    /// stderr split into lines (without newlines).
+    std::vector<std::string> err_lines() const;
+};
+
+/// Runs COLLIDESCOPE_BIN with `args` (each passed as one shell word) in `directory`.
+CliResult run_cli(const std::vector<std::string>& args, const std::filesystem::path& directory);
+
+/// One line of the pairs TSV.
+struct FramePair {
+    std::uint32_t frame = 0;
+    TrianglePair pair;
+    friend auto operator<=>(const FramePair&, const FramePair&) = default;
+};
+
+/// Parses pairs TSV strictly: every line exactly five tab-separated decimal numbers, each
+/// line ending in '\n'. Adds a test failure naming the line otherwise.
+std::vector<FramePair> parse_pairs_tsv(const std::string& text);
+
+/// Writes every object of `scene` as `<directory>/<name>.%04d.ply` (float32 binary PLY, frame
+/// numbers from `first_number`) and returns the patterns, in object order.
+std::vector<std::string> write_scene_files(const Scene& scene, const std::filesystem::path& directory,
+                                           int first_number = 0);
+
+/// The reference pairs of every frame of `scene` (support/brute_reference), as TSV lines.
+std::vector<FramePair> reference_frame_pairs(const Scene& scene, bool self_collision);
+
+/// The text of a file.
+std::string read_text(const std::filesystem::path& file);
+
+}  // namespace collidescope::testing

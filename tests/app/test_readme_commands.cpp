@@ -1,0 +1,75 @@
+// The README's two commands and .ci/run: CI runs exactly README's test command, and both
+// commands use the paths the build really produces.
+
+#include "app/cli_runner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+namespace collidescope {
+namespace {
+
+const std::filesystem::path k_source_dir = COLLIDESCOPE_SOURCE_DIR;
+
+// The command in the ```sh block right after `marker` in README.md ("" when missing).
+std::string readme_command(const std::string& marker) {
+    std::istringstream readme(testing::read_text(k_source_dir / "README.md"));
+    bool after_marker = false;
+    bool in_block = false;
+    for (std::string line; std::getline(readme, line);) {
+        if (line == "<!-- " + marker + " -->") {
+            after_marker = true;
+        } else if (after_marker && line == "```sh") {
+            in_block = true;
+        } else if (in_block) {
+            return line;
+        }
+    }
+    return "";
+}
+
+std::vector<std::string> lines_of(const std::filesystem::path& file) {
+    std::istringstream text(testing::read_text(file));
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(text, line);) lines.push_back(line);
+    return lines;
+}
+
+TEST(ReadmeCommands, CiRunsTheTestCommandVerbatim) {
+    const std::string command = readme_command("readme-command-b");
+    ASSERT_NE(command, "");
+    EXPECT_NE(command.find("ctest"), std::string::npos) << command;
+    const std::vector<std::string> ci = lines_of(k_source_dir / ".ci/run");
+    ASSERT_GE(ci.size(), 3u);
+    EXPECT_EQ(ci.front(), "#!/usr/bin/env bash");
+    EXPECT_NE(std::find(ci.begin(), ci.end(), "set -euo pipefail"), ci.end());
+    EXPECT_EQ(ci.back(), command) << ".ci/run must end with README's command (b)";
+}
+
+TEST(ReadmeCommands, ScriptsAreExecutable) {
+    for (const char* script : {".ci/run", "scripts/setup.sh"}) {
+        struct stat info {};
+        ASSERT_EQ(::stat((k_source_dir / script).c_str(), &info), 0) << script;
+        EXPECT_NE(info.st_mode & S_IXUSR, 0u) << script << " is not executable";
+    }
+}
+
+TEST(ReadmeCommands, MainJobRunsTheBuiltBinary) {
+    const std::string command = readme_command("readme-command-a");
+    ASSERT_NE(command, "");
+    EXPECT_EQ(command.rfind("scripts/setup.sh && ", 0), 0u) << command;
+    // The binary the command runs is where this build puts it, relative to its build dir.
+    const std::filesystem::path binary = COLLIDESCOPE_BIN;
+    EXPECT_NE(command.find("build/" + binary.parent_path().filename().string() + "/" + binary.filename().string() +
+                           " check --scene demo"),
+              std::string::npos)
+        << command;
+}
+
+}  // namespace
+}  // namespace collidescope

@@ -1,0 +1,90 @@
+// orient3d / orient2d against GMP rationals on random, near-degenerate and badly scaled
+// inputs, and the filter's fallback counter.
+
+#include "collidescope/geometry.hpp"
+
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace collidescope {
+namespace {
+
+int reference_orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+    mpq_class m[3][3];
+    const Vec3* rows[3] = {&a, &b, &c};
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) m[i][k] = mpq_class((*rows[i])[k]) - mpq_class(d[k]);
+    const mpq_class det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                          m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                          m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    return sgn(det);
+}
+
+int reference_orient2d(const Vec3& a, const Vec3& b, const Vec3& c, int drop) {
+    const int i = (drop + 1) % 3, j = (drop + 2) % 3;
+    const mpq_class det = (mpq_class(a[i]) - c[i]) * (mpq_class(b[j]) - c[j]) -
+                          (mpq_class(a[j]) - c[j]) * (mpq_class(b[i]) - c[i]);
+    return sgn(det);
+}
+
+/// Points nearly on a plane/line: the float determinant is useless, the exact path decides.
+TEST(Predicates, MatchRationalsOnNearDegenerateInputs) {
+    const std::uint64_t seed = 20261122;
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    std::uniform_int_distribution<int> exponent(-60, 60);
+    int zeros = 0, nonzeros = 0;
+    for (int n = 0; n < 20000; ++n) {
+        const double scale = std::ldexp(1.0, exponent(rng) * (n % 4 == 0 ? 4 : 1));
+        const Vec3 a = Vec3(unit(rng), unit(rng), unit(rng)) * scale;
+        const Vec3 b = Vec3(unit(rng), unit(rng), unit(rng)) * scale;
+        const Vec3 c = Vec3(unit(rng), unit(rng), unit(rng)) * scale;
+        // d on the plane in exact arithmetic when the weights are small dyadics, else nearly.
+        const double u = std::ldexp(std::floor(unit(rng) * 8), -3);
+        const double v = std::ldexp(std::floor(unit(rng) * 8), -3);
+        const Vec3 d = a + u * (b - a) + v * (c - a);
+        const int expected = reference_orient3d(a, b, c, d);
+        ASSERT_EQ(orient3d(a, b, c, d), expected) << "seed " << seed << " case " << n;
+        (expected == 0 ? zeros : nonzeros)++;
+        for (int drop = 0; drop < 3; ++drop)
+            ASSERT_EQ(orient2d(a, b, d, drop), reference_orient2d(a, b, d, drop))
+                << "seed " << seed << " case " << n;
+    }
+    EXPECT_GT(zeros, 100);
+    EXPECT_GT(nonzeros, 100);
+}
+
+TEST(Predicates, ExtremeMagnitudesUseExactArithmetic) {
+    for (double scale : {1e-300, 0x1p-600, 1e-30, 1e30, 0x1p600, 1e300}) {
+        const Vec3 a(0, 0, 0), b(scale, 0, 0), c(0, scale, 0);
+        EXPECT_EQ(orient3d(a, b, c, Vec3(scale, scale, 0)), 0) << scale;
+        EXPECT_EQ(orient3d(a, b, c, Vec3(0.25 * scale, 0.25 * scale, -scale)),
+                  reference_orient3d(a, b, c, Vec3(0.25 * scale, 0.25 * scale, -scale)));
+        const Vec3 tiny_up(0.3 * scale, 0.3 * scale, std::nextafter(0.0, 1.0));
+        EXPECT_EQ(orient3d(a, b, c, tiny_up), reference_orient3d(a, b, c, tiny_up)) << scale;
+        EXPECT_NE(orient3d(a, b, c, tiny_up), 0) << scale;
+    }
+}
+
+TEST(Predicates, MixedMagnitudes) {
+    // 1e30 and 1e-30 in one determinant: differences are inexact in doubles.
+    const Vec3 a(1e30, 0, 0), b(1e30, 1e-30, 0), c(1e30, 0, 1e-30), d(1e30 + 1e15, 1e-30, 1e-30);
+    EXPECT_EQ(orient3d(a, b, c, d), reference_orient3d(a, b, c, d));
+    EXPECT_EQ(orient2d(a, b, d, 2), reference_orient2d(a, b, d, 2));
+}
+
+TEST(Predicates, CountersSeeFallbacks) {
+    const PredicateCounters before = predicate_counters();
+    const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
+    orient3d(a, b, c, Vec3(0.25, 0.25, 1));  // decided by the filter
+    orient3d(a, b, c, Vec3(0.25, 0.25, 0));  // exactly coplanar: exact path
+    const PredicateCounters after = predicate_counters();
+    EXPECT_EQ(after.filtered - before.filtered, 1u);
+    EXPECT_EQ(after.exact - before.exact, 1u);
+}
+
+}  // namespace
+}  // namespace collidescope
