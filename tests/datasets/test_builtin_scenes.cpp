@@ -12,11 +12,19 @@
 namespace collidescope {
 namespace {
 
-TEST(BuiltinScenes, RegistryListsDemo) {
-    const std::vector<std::string> names = builtin_scene_names();
-    ASSERT_FALSE(names.empty());
-    EXPECT_EQ(names.front(), "demo");
+TEST(BuiltinScenes, RegistryListsTheDataSetsAndDemo) {
+    EXPECT_EQ(builtin_scene_names(),
+              (std::vector<std::string>{"A", "B", "C", "D", "E1", "E2", "E3", "E4", "demo"}));
     EXPECT_EQ(builtin_scene_presets("demo"), (std::vector<std::string>{"default", "small"}));
+    EXPECT_EQ(builtin_scene_presets("C"), (std::vector<std::string>{"default", "small", "large"}));
+}
+
+TEST(BuiltinScenes, AliasesNameTheSameScenes) {
+    EXPECT_EQ(builtin_scene_presets("cloths"), builtin_scene_presets("B"));
+    const Scene by_alias = make_builtin_scene("sine-sheets:small");
+    const Scene by_name = make_builtin_scene("C:small");
+    EXPECT_EQ(by_alias.name, "C");
+    EXPECT_EQ(by_alias.source->frame(3).objects[1].vertices, by_name.source->frame(3).objects[1].vertices);
 }
 
 TEST(BuiltinScenes, UnknownNameOrPresetListsTheKnownOnes) {

@@ -1,8 +1,12 @@
 #pragma once
 /// Built-in scenes (engine/src/datasets): generated in memory, deterministic, no files.
 ///
-/// A scene is named `NAME[:PRESET]`; the preset picks a size. For now one scene, `demo`; the
-/// thesis's data sets A-E join this registry in a later issue.
+/// A scene is named `NAME[:PRESET]`; the preset picks a size. The thesis's data sets (chapter 5)
+/// are `A` (two bunnies), `B` (waving cloths), `C` (sine-wave sheets), `D` (BART-like soup that
+/// assembles), `E1`-`E4` (exploding dragons, fastest to slowest), each with the presets
+/// `default`, `small` and `large` (docs/datasets.md has their sizes); `demo` is a small
+/// torus-and-sheet scene. Longer aliases (`bunnies`, `cloths`, `sine-sheets`, `bart`,
+/// `dragon-fastest` .. `dragon-slowest`) name the same scenes.
 
 #include "collidescope/scene.hpp"
 
@@ -16,7 +20,7 @@ namespace collidescope {
 /// Throws InputError naming the known scenes (or the scene's known presets) on an unknown one.
 Scene make_builtin_scene(std::string_view spec);
 
-/// The built-in scene names, in a stable order.
+/// The built-in scene names (canonical, not aliases), in a stable order: A, B, C, D, E1-E4, demo.
 std::vector<std::string> builtin_scene_names();
 
 /// The presets of built-in scene `name`, default first. Throws InputError on an unknown name.

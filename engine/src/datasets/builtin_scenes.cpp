@@ -1,6 +1,7 @@
 // The registry of built-in scenes. A new scene adds one entry to k_scenes.
 
 #include "datasets/demo_scene.hpp"
+#include "datasets/generators.hpp"
 
 #include "collidescope/datasets.hpp"
 #include "collidescope/error.hpp"
@@ -14,14 +15,54 @@ struct SceneEntry {
     Scene (*make)(const std::string& preset);
 };
 
+// Every data set is generated from this seed unless a caller asks for another one (the
+// generators take it as a parameter; the names give the documented animation).
+constexpr std::uint64_t k_dataset_seed = 1;
+
 Scene make_demo(const std::string& preset) { return make_demo_scene(demo_config(preset), preset); }
 
-// In the order builtin_scene_names() lists them.
+std::vector<std::string> dataset_presets() { return {"default", "small", "large"}; }
+
+Scene make_A(const std::string& preset) { return datasets::make_scene_A(preset, k_dataset_seed); }
+Scene make_B(const std::string& preset) { return datasets::make_scene_B(preset, k_dataset_seed); }
+Scene make_C(const std::string& preset) { return datasets::make_scene_C(preset, k_dataset_seed); }
+Scene make_D(const std::string& preset) { return datasets::make_scene_D(preset, k_dataset_seed); }
+template <int speed>
+Scene make_E(const std::string& preset) { return datasets::make_scene_E(speed, preset, k_dataset_seed); }
+
+// In the order builtin_scene_names() lists them: the thesis's data sets (chapter 5), then the
+// demo. Aliases are listed by builtin_scene_names() too, after the canonical names.
 constexpr SceneEntry k_scenes[] = {
+    {"A", &dataset_presets, &make_A},
+    {"B", &dataset_presets, &make_B},
+    {"C", &dataset_presets, &make_C},
+    {"D", &dataset_presets, &make_D},
+    {"E1", &dataset_presets, &make_E<1>},
+    {"E2", &dataset_presets, &make_E<2>},
+    {"E3", &dataset_presets, &make_E<3>},
+    {"E4", &dataset_presets, &make_E<4>},
     {"demo", &demo_presets, &make_demo},
 };
 
+// Longer names for the data sets, resolved to the canonical ones.
+struct SceneAlias {
+    std::string_view alias;
+    std::string_view name;
+};
+constexpr SceneAlias k_aliases[] = {
+    {"bunnies", "A"}, {"cloths", "B"}, {"sine-sheets", "C"}, {"bart", "D"},
+    {"dragon-fastest", "E1"}, {"dragon-fast", "E2"}, {"dragon-slow", "E3"}, {"dragon-slowest", "E4"},
+};
+
+std::string_view resolve_alias(std::string_view name) {
+    for (const SceneAlias& alias : k_aliases) {
+        if (alias.alias == name) return alias.name;
+    }
+    return name;
+}
+
 const SceneEntry& find_scene(std::string_view name) {
+    name = resolve_alias(name);
     for (const SceneEntry& entry : k_scenes) {
         if (entry.name == name) return entry;
     }
