@@ -6,8 +6,8 @@
 #include "frame_range.hpp"
 #include "output_stream.hpp"
 #include "progress.hpp"
+#include "scene_input.hpp"
 
-#include "collidescope/datasets.hpp"
 #include "collidescope/error.hpp"
 #include "collidescope/pipeline.hpp"
 #include "collidescope/scene.hpp"
@@ -42,23 +42,6 @@ Outputs (FILE may be - for stdout; logs and progress always go to stderr):
   --stats  JSON Lines, one object per frame: {"frame", "method", "ms": {...}, "counts": {...}}.
 Exit codes: 0 no collisions, 1 collisions found, 2 error (bad input or usage).)";
 
-Scene open_scene(const CheckOptions& options) {
-    if (!options.scene.empty() && !options.inputs.empty()) {
-        throw InputError("give either INPUT files or --scene, not both");
-    }
-    if (!options.scene.empty()) return make_builtin_scene(options.scene);
-    if (options.inputs.empty()) {
-        throw InputError("no input: give INPUT files (mesh, frame pattern or scene.json) or --scene NAME");
-    }
-    return open_inputs(options.inputs);
-}
-
-bool self_collision(const CheckOptions& options, const Scene& scene) {
-    if (options.self) return true;
-    if (options.no_self) return false;
-    return scene.self_collision;
-}
-
 std::string scene_line(const Scene& scene, const FrameRange& range, const PipelineConfig& config) {
     std::string line = "scene '" + scene.name + "'";
     if (!scene.preset.empty()) line += " (" + scene.preset + ")";
@@ -73,9 +56,11 @@ int run_check(const CheckOptions& options) {
     if (options.pairs == "-" && options.stats == "-") {
         throw InputError("--pairs and --stats cannot both write to stdout (-)");
     }
-    const Scene scene = open_scene(options);
+    const Scene scene = open_scene(options.inputs, options.scene);
     const FrameRange range = parse_frame_range(options.frames, scene.source->frame_count());
-    const PipelineConfig config{options.method, self_collision(options, scene), options.threads};
+    const PipelineConfig config{options.method,
+                                resolve_self_collision(options.self, options.no_self, scene),
+                                options.threads};
     Pipeline pipeline(config);
 
     Progress progress(range.end - range.begin);
@@ -118,13 +103,7 @@ Command add_check_command(CLI::App& app) {
         ->type_name("INPUT");
     check->add_option("--scene", options->scene,
                       "A built-in scene instead of INPUT files: NAME[:PRESET] (" +
-                          [] {
-                              std::string names;
-                              for (const std::string& name : builtin_scene_names()) {
-                                  names += (names.empty() ? "" : ", ") + name;
-                              }
-                              return names;
-                          }() + ")")
+                          builtin_scene_list() + ")")
         ->type_name("NAME[:PRESET]");
     check->add_option("--method", options->method, "Collision method")
         ->check(CLI::IsMember(method_names()))
