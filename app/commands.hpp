@@ -18,4 +18,22 @@ struct Command {
 /// `collidescope check`: collision pairs per frame of a scene (check.cpp).
 Command add_check_command(CLI::App& app);
 
+/// `collidescope record`: a session's trace to one HDF5 file (record.cpp, docs/recording.md).
+Command add_record_command(CLI::App& app);
+
+/// `collidescope inspect`: what a recording holds, as text or JSON (inspect.cpp).
+Command add_inspect_command(CLI::App& app);
+
+/// `collidescope validate`: checks a recording's invariants; exit 1 when one fails (validate.cpp).
+Command add_validate_command(CLI::App& app);
+
+/// `collidescope compare`: pairs and times of two recordings; exit 1 when pairs differ (compare.cpp).
+Command add_compare_command(CLI::App& app);
+
+/// `collidescope export`: a built-in scene as PLY frame sequences + scene.json (export.cpp).
+Command add_export_command(CLI::App& app);
+
+/// `collidescope bench`: every method on every data set, CSVs, plots, a table (bench.cpp).
+Command add_bench_command(CLI::App& app);
+
 }  // namespace collidescope::app

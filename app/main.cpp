@@ -44,6 +44,12 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     const std::vector<collidescope::app::Command> commands = {
         collidescope::app::add_check_command(app),
+        collidescope::app::add_record_command(app),
+        collidescope::app::add_inspect_command(app),
+        collidescope::app::add_validate_command(app),
+        collidescope::app::add_compare_command(app),
+        collidescope::app::add_export_command(app),
+        collidescope::app::add_bench_command(app),
     };
     try {
         app.parse(argc, argv);

@@ -1,0 +1,165 @@
+// bench's CSV files, table and index page (the SVG plot is in bench_plot.cpp).
+
+#include "bench_report.hpp"
+
+#include "collidescope/error.hpp"
+#include "collidescope/stats.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace collidescope::app {
+namespace {
+
+std::vector<std::string> stage_names() {
+    std::vector<std::string> names;
+    for_each_stage(StageTimes{}, [&](const char* name, double) { names.emplace_back(name); });
+    return names;
+}
+
+std::vector<std::string> count_names() {
+    std::vector<std::string> names;
+    for_each_count(FrameCounts{}, [&](const char* name, std::uint64_t) { names.emplace_back(name); });
+    return names;
+}
+
+std::string fixed(double value, int digits) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", digits, value);
+    return text;
+}
+
+std::size_t count_index(const std::string& name) {
+    const std::vector<std::string> names = count_names();
+    return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+}
+
+BenchSummary summarize_method(const BenchScene& scene, const std::string& method) {
+    BenchSummary row{scene.name, scene.preset, method};
+    std::vector<double> totals;
+    const std::size_t colliding = count_index("colliding_pairs");
+    const std::size_t candidates = count_index("candidate_pairs");
+    for (const BenchFrame& frame : scene.frames) {
+        if (frame.method != method) continue;
+        totals.push_back(frame.total_ms());
+        row.total_ms += frame.total_ms();
+        row.colliding_pairs += frame.counts[colliding];
+        row.candidate_pairs += frame.counts[candidates];
+    }
+    row.frames = static_cast<std::uint32_t>(totals.size());
+    if (!totals.empty()) {
+        std::sort(totals.begin(), totals.end());
+        const std::size_t n = totals.size();
+        row.median_ms = n % 2 == 1 ? totals[n / 2] : 0.5 * (totals[n / 2 - 1] + totals[n / 2]);
+    }
+    return row;
+}
+
+}  // namespace
+
+std::vector<BenchSummary> summarize(const std::vector<BenchScene>& scenes) {
+    std::vector<BenchSummary> rows;
+    for (const BenchScene& scene : scenes) {
+        const std::size_t first = rows.size();
+        double fastest = std::numeric_limits<double>::infinity();
+        for (const std::string& method : scene.methods) {
+            rows.push_back(summarize_method(scene, method));
+            fastest = std::min(fastest, rows.back().total_ms);
+        }
+        for (std::size_t i = first; i < rows.size(); ++i) {
+            rows[i].ratio = fastest > 0 ? rows[i].total_ms / fastest : 1.0;
+        }
+    }
+    return rows;
+}
+
+void write_text_file(const std::filesystem::path& file, const std::string& text) {
+    std::ofstream out(file, std::ios::binary);
+    out << text;
+    if (!out.flush()) throw InputError(file.string() + ": cannot write the file");
+}
+
+void write_frames_csv(const std::filesystem::path& file, const std::vector<BenchScene>& scenes) {
+    std::ostringstream out;
+    out << "scene,preset,method,frame";
+    for (const std::string& name : stage_names()) out << ",ms_" << name;
+    for (const std::string& name : count_names()) out << ',' << name;
+    out << '\n';
+    for (const BenchScene& scene : scenes) {
+        for (const BenchFrame& frame : scene.frames) {
+            out << scene.name << ',' << scene.preset << ',' << frame.method << ',' << frame.frame;
+            for (const double ms : frame.ms) out << ',' << fixed(ms, 4);
+            for (const std::uint64_t count : frame.counts) out << ',' << count;
+            out << '\n';
+        }
+    }
+    write_text_file(file, out.str());
+}
+
+void write_summary_csv(const std::filesystem::path& file, const std::vector<BenchSummary>& rows) {
+    std::ostringstream out;
+    out << "scene,preset,method,frames,median_ms,total_ms,ratio_to_fastest,colliding_pairs,"
+           "candidate_pairs\n";
+    for (const BenchSummary& row : rows) {
+        out << row.scene << ',' << row.preset << ',' << row.method << ',' << row.frames << ','
+            << fixed(row.median_ms, 4) << ',' << fixed(row.total_ms, 4) << ',' << fixed(row.ratio, 3)
+            << ',' << row.colliding_pairs << ',' << row.candidate_pairs << '\n';
+    }
+    write_text_file(file, out.str());
+}
+
+void print_table(std::ostream& out, const std::vector<BenchSummary>& rows) {
+    char line[256];
+    std::snprintf(line, sizeof line, "%-12s %-10s %6s %11s %12s %9s %14s\n", "scene", "method",
+                  "frames", "median ms", "total ms", "x fastest", "colliding");
+    out << line;
+    for (const BenchSummary& row : rows) {
+        const std::string scene = row.scene + ":" + row.preset;
+        std::snprintf(line, sizeof line, "%-12s %-10s %6u %11.3f %12.3f %9.2f %14llu\n",
+                      scene.c_str(), row.method.c_str(), row.frames, row.median_ms, row.total_ms,
+                      row.ratio, static_cast<unsigned long long>(row.colliding_pairs));
+        out << line;
+    }
+}
+
+std::string plot_file_name(const BenchScene& scene) {
+    return "time_" + scene.name + "_" + scene.preset + ".svg";
+}
+
+void write_index_html(const std::filesystem::path& file, const std::vector<BenchScene>& scenes,
+                      const std::vector<BenchSummary>& rows, const std::string& settings) {
+    std::ostringstream out;
+    out << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>collidescope bench</title>\n"
+           "<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse}"
+           "td,th{border:1px solid #bbb;padding:2px 8px;text-align:right}"
+           "td:first-child,td:nth-child(2){text-align:left}</style></head><body>\n"
+           "<h1>collidescope bench</h1>\n<p>" << settings << "</p>\n"
+           "<p>Times are the median over the repeats of each frame; every method returned the "
+           "same pairs on every frame unless a mismatch is listed below.</p>\n<table>\n"
+           "<tr><th>scene</th><th>method</th><th>frames</th><th>median ms</th><th>total ms</th>"
+           "<th>x fastest</th><th>colliding pairs</th></tr>\n";
+    for (const BenchSummary& row : rows) {
+        out << "<tr><td>" << row.scene << ':' << row.preset << "</td><td>" << row.method << "</td><td>"
+            << row.frames << "</td><td>" << fixed(row.median_ms, 3) << "</td><td>"
+            << fixed(row.total_ms, 3) << "</td><td>" << fixed(row.ratio, 2) << "</td><td>"
+            << row.colliding_pairs << "</td></tr>\n";
+    }
+    out << "</table>\n";
+    for (const BenchScene& scene : scenes) {
+        for (const BenchMismatch& m : scene.mismatches) {
+            out << "<p><b>mismatch</b>: " << scene.name << " frame " << m.frame << ": " << m.method
+                << " misses " << m.missing << " and adds " << m.extra << " pairs of " << m.reference
+                << "</p>\n";
+        }
+        out << "<h2>" << scene.name << " (" << scene.preset << ", " << scene.triangles
+            << " triangles)</h2>\n<img src=\"" << plot_file_name(scene) << "\" alt=\"time per frame, "
+            << scene.name << "\">\n";
+    }
+    out << "</body></html>\n";
+    write_text_file(file, out.str());
+}
+
+}  // namespace collidescope::app

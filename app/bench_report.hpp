@@ -1,0 +1,53 @@
+#pragma once
+// `collidescope bench`, the reporting part: frames.csv, summary.csv, the printed table, one
+// SVG plot of time per frame per method for each scene (in the style of the thesis's Figures
+// 5.6-5.13) and an index.html that shows them.
+
+#include "bench_run.hpp"
+
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace collidescope::app {
+
+/// One scene and method, summed over its frames.
+struct BenchSummary {
+    std::string scene;
+    std::string preset;
+    std::string method;
+    std::uint32_t frames = 0;
+    double median_ms = 0;       ///< median of the per-frame total
+    double total_ms = 0;        ///< sum of the per-frame totals
+    double ratio = 0;           ///< total_ms / the scene's fastest method's total_ms
+    std::uint64_t colliding_pairs = 0;
+    std::uint64_t candidate_pairs = 0;
+};
+
+/// Summaries of every scene and method, in run order.
+std::vector<BenchSummary> summarize(const std::vector<BenchScene>& scenes);
+
+/// frames.csv: scene, preset, method, frame, every stage's ms (`ms_<stage>`), every count.
+void write_frames_csv(const std::filesystem::path& file, const std::vector<BenchScene>& scenes);
+
+/// summary.csv: one row per BenchSummary.
+void write_summary_csv(const std::filesystem::path& file, const std::vector<BenchSummary>& rows);
+
+/// The summary as an aligned text table.
+void print_table(std::ostream& out, const std::vector<BenchSummary>& rows);
+
+/// An SVG line chart of the per-frame total time of each method on one scene.
+std::string plot_svg(const BenchScene& scene);
+
+/// The file name of a scene's plot: "time_<scene>_<preset>.svg".
+std::string plot_file_name(const BenchScene& scene);
+
+/// index.html: the run's settings, the summary table and every plot.
+void write_index_html(const std::filesystem::path& file, const std::vector<BenchScene>& scenes,
+                      const std::vector<BenchSummary>& rows, const std::string& settings);
+
+/// Writes `text` to `file`; throws InputError naming the file when it cannot.
+void write_text_file(const std::filesystem::path& file, const std::string& text);
+
+}  // namespace collidescope::app

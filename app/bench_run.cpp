@@ -1,0 +1,113 @@
+// Runs every method on every frame of a scene, repeats, medians, and the cross-method check.
+
+#include "bench_run.hpp"
+
+#include "collidescope/pipeline.hpp"
+#include "collidescope/stats.hpp"
+
+#include <algorithm>
+#include <memory>
+
+namespace collidescope::app {
+namespace {
+
+std::vector<double> stage_values(const StageTimes& ms) {
+    std::vector<double> values;
+    for_each_stage(ms, [&](const char*, double value) { values.push_back(value); });
+    return values;
+}
+
+std::vector<std::uint64_t> count_values(const FrameCounts& counts) {
+    std::vector<std::uint64_t> values;
+    for_each_count(counts, [&](const char*, std::uint64_t value) { values.push_back(value); });
+    return values;
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// Per method and frame, the stage values of every repeat.
+using Samples = std::vector<std::vector<std::vector<std::vector<double>>>>;  // [m][f][rep][stage]
+
+}  // namespace
+
+BenchMismatch compare_pair_lists(const std::vector<TrianglePair>& reference,
+                                 const std::vector<TrianglePair>& pairs) {
+    BenchMismatch mismatch;
+    std::size_t i = 0;
+    std::size_t j = 0;
+    while (i < reference.size() || j < pairs.size()) {
+        if (j == pairs.size() || (i < reference.size() && reference[i] < pairs[j])) {
+            ++mismatch.missing;
+            ++i;
+        } else if (i == reference.size() || pairs[j] < reference[i]) {
+            ++mismatch.extra;
+            ++j;
+        } else {
+            ++i;
+            ++j;
+        }
+    }
+    return mismatch;
+}
+
+BenchScene run_bench_scene(const Scene& scene, const BenchPlan& plan,
+                           const std::function<void()>& on_step) {
+    BenchScene result{scene.name, scene.preset, plan.methods, {}, {}, 0};
+    const std::size_t methods = plan.methods.size();
+    const std::uint32_t frames = plan.end - plan.begin;
+    Samples samples(methods, std::vector<std::vector<std::vector<double>>>(frames));
+    std::vector<std::vector<std::vector<std::uint64_t>>> counts(methods, std::vector<std::vector<std::uint64_t>>(frames));
+
+    for (int rep = 0; rep < plan.repeat; ++rep) {
+        // Fresh pipelines each repeat: methods keep state (trees, GPU state) across frames.
+        std::vector<std::unique_ptr<Pipeline>> pipelines;
+        for (const std::string& method : plan.methods) {
+            pipelines.push_back(std::make_unique<Pipeline>(
+                PipelineConfig{method, plan.self_collision, plan.threads}));
+        }
+        for (std::uint32_t f = 0; f < frames; ++f) {
+            const Frame frame = scene.source->frame(plan.begin + f);
+            if (rep == 0 && f == 0) {
+                for (const ObjectFrame& object : frame.objects) result.triangles += object.triangle_count();
+            }
+            std::vector<TrianglePair> reference;
+            for (std::size_t m = 0; m < methods; ++m) {
+                FrameResult frame_result = pipelines[m]->process(frame);
+                samples[m][f].push_back(stage_values(frame_result.stats.ms));
+                if (rep == 0) counts[m][f] = count_values(frame_result.stats.counts);
+                if (m == 0) {
+                    reference = std::move(frame_result.colliding_pairs);
+                    continue;
+                }
+                BenchMismatch mismatch = compare_pair_lists(reference, frame_result.colliding_pairs);
+                if (mismatch.missing + mismatch.extra > 0) {  // any repeat: a flaky method is wrong too
+                    mismatch.frame = plan.begin + f;
+                    mismatch.method = plan.methods[m];
+                    mismatch.reference = plan.methods[0];
+                    result.mismatches.push_back(mismatch);
+                }
+            }
+            on_step();
+        }
+    }
+
+    for (std::size_t m = 0; m < methods; ++m) {
+        for (std::uint32_t f = 0; f < frames; ++f) {
+            const std::size_t stages = samples[m][f].front().size();
+            std::vector<double> ms(stages);
+            for (std::size_t s = 0; s < stages; ++s) {
+                std::vector<double> values;
+                for (const std::vector<double>& run : samples[m][f]) values.push_back(run[s]);
+                ms[s] = median(std::move(values));
+            }
+            result.frames.push_back({plan.methods[m], plan.begin + f, std::move(ms), counts[m][f]});
+        }
+    }
+    return result;
+}
+
+}  // namespace collidescope::app

@@ -1,0 +1,147 @@
+// `collidescope export` and `collidescope bench` end to end on the small data sets: exported
+// files read back as exactly the generated frames, and bench writes every file it promises.
+
+#include "app/cli_runner.hpp"
+#include "mesh/temp_files.hpp"
+
+#include "bench_run.hpp"
+
+#include "collidescope/datasets.hpp"
+#include "collidescope/error.hpp"
+#include "collidescope/mesh.hpp"
+#include "collidescope/pipeline.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <fstream>
+
+namespace collidescope {
+namespace {
+
+using testing::read_text;
+using testing::run_cli;
+using testing_files::TempDir;
+
+// The scene, or a skip naming why it is unavailable (a data package not installed).
+#define MAKE_SCENE_OR_SKIP(var, spec)                                   \
+    Scene var;                                                          \
+    try {                                                               \
+        var = make_builtin_scene(spec);                                 \
+    } catch (const UnavailableError& error) {                           \
+        GTEST_SKIP() << error.what();                                   \
+    }
+
+std::size_t line_count(const std::string& text) {
+    return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
+
+class ExportRoundTrip : public ::testing::TestWithParam<std::string> {};
+
+// export then check on the files gives exactly the pairs of check --scene (self-collision as the
+// scene sets it, which the manifest carries).
+TEST_P(ExportRoundTrip, CheckOnExportedFilesFindsTheScenesPairs) {
+    const std::string spec = GetParam() + ":small";
+    MAKE_SCENE_OR_SKIP(scene, spec);
+    TempDir dir;
+    const auto exported = run_cli({"export", spec, "-o", "out"}, dir.path());
+    ASSERT_EQ(exported.exit_code, 0) << exported.err;
+    const auto from_files = run_cli({"check", "out/scene.json", "--pairs", "files.tsv", "--exit-zero", "-q"}, dir.path());
+    const auto from_scene = run_cli({"check", "--scene", spec, "--pairs", "scene.tsv", "--exit-zero", "-q"}, dir.path());
+    ASSERT_EQ(from_files.exit_code, 0) << from_files.err;
+    ASSERT_EQ(from_scene.exit_code, 0) << from_scene.err;
+    const std::string expected = read_text(dir.path() / "scene.tsv");
+    EXPECT_GT(line_count(expected), 0u) << spec << " has no collisions at all";
+    EXPECT_EQ(read_text(dir.path() / "files.tsv"), expected) << spec;
+
+    const nlohmann::json manifest = nlohmann::json::parse(read_text(dir.path() / "out/scene.json"));
+    EXPECT_EQ(manifest["frames"], scene.source->frame_count());
+    EXPECT_EQ(manifest["self"], scene.self_collision);
+    EXPECT_EQ(manifest["objects"].size(), scene.source->object_count());
+}
+
+INSTANTIATE_TEST_SUITE_P(DataSets, ExportRoundTrip, ::testing::Values("A", "B", "C", "D", "E1"),
+                         [](const auto& info) { return info.param; });
+
+// Every exported frame file holds exactly the generated vertices and triangles, including across
+// D's topology change.
+TEST(Export, FilesHoldTheGeneratedFramesBitForBit) {
+    MAKE_SCENE_OR_SKIP(scene, "D:small");
+    TempDir dir;
+    ASSERT_EQ(run_cli({"export", "D:small", "-o", "out", "-q"}, dir.path()).exit_code, 0);
+    const nlohmann::json manifest = nlohmann::json::parse(read_text(dir.path() / "out/scene.json"));
+    for (std::uint32_t f = 0; f < scene.source->frame_count(); ++f) {
+        const Frame frame = scene.source->frame(f);
+        for (std::uint32_t o = 0; o < frame.objects.size(); ++o) {
+            char name[256];
+            std::snprintf(name, sizeof name, manifest["objects"][o]["pattern"].get<std::string>().c_str(), f);
+            const MeshData mesh = read_mesh_file(dir.path() / "out" / name);
+            EXPECT_EQ(mesh.vertices, frame.objects[o].vertices) << name;
+            EXPECT_EQ(mesh.triangles, frame.objects[o].topology->triangles) << name;
+        }
+    }
+}
+
+TEST(Export, FramesRangeIsRenumberedFromZero) {
+    TempDir dir;
+    const auto result = run_cli({"export", "C:small", "-o", "out", "--frames", "4:7", "-q"}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    const nlohmann::json manifest = nlohmann::json::parse(read_text(dir.path() / "out/scene.json"));
+    EXPECT_EQ(manifest["frames"], 3);
+    std::string stem = manifest["objects"][0]["pattern"].get<std::string>();
+    stem = stem.substr(0, stem.find(".%04d.ply"));
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "out" / (stem + ".0002.ply"))) << stem;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "out" / (stem + ".0003.ply"))) << stem;
+}
+
+TEST(Export, UnknownSceneIsAnErrorNamingTheKnownOnes) {
+    TempDir dir;
+    const auto result = run_cli({"export", "Z", "-o", "out"}, dir.path());
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_NE(result.err.find("known: A, B"), std::string::npos) << result.err;
+}
+
+// bench on two small scenes writes frames.csv, summary.csv, a plot per scene and index.html,
+// prints the table and says the methods agreed.
+TEST(Bench, TwoSmallScenesProduceEveryFile) {
+    TempDir dir;
+    const auto result = run_cli({"bench", "--scenes", "C,D", "--preset", "small", "--repeat", "2", "-o", "out"},
+                                dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    const std::filesystem::path out = dir.path() / "out";
+    const std::size_t methods = method_names().size();
+    const std::size_t frames = make_builtin_scene("C:small").source->frame_count() +
+                               make_builtin_scene("D:small").source->frame_count();
+    EXPECT_EQ(line_count(read_text(out / "frames.csv")), 1 + frames * methods);
+    EXPECT_EQ(line_count(read_text(out / "summary.csv")), 1 + 2 * methods);
+    for (const char* plot : {"time_C_small.svg", "time_D_small.svg"}) {
+        const std::string svg = read_text(out / plot);
+        EXPECT_NE(svg.find("<polyline"), std::string::npos) << plot;
+        EXPECT_NE(read_text(out / "index.html").find(plot), std::string::npos) << plot;
+    }
+    EXPECT_NE(result.out.find("C:small"), std::string::npos) << result.out;
+    EXPECT_NE(result.out.find("D:small"), std::string::npos) << result.out;
+    EXPECT_NE(result.err.find("identical pairs"), std::string::npos) << result.err;
+}
+
+TEST(Bench, BruteIsSkippedOnLargerPresetsUnlessNamed) {
+    TempDir dir;
+    const auto result = run_cli({"bench", "--scenes", "C:default", "--methods", "brute", "--frames", "0:2",
+                                 "--repeat", "1", "-o", "out"}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_NE(result.out.find("C:default"), std::string::npos) << result.out;
+}
+
+TEST(Bench, ComparePairListsCountsMissingAndExtra) {
+    const std::vector<TrianglePair> reference = {{0, 1, 1, 2}, {0, 1, 1, 3}, {0, 4, 1, 0}};
+    const std::vector<TrianglePair> pairs = {{0, 1, 1, 3}, {0, 4, 1, 0}, {0, 5, 1, 0}, {0, 6, 1, 0}};
+    const app::BenchMismatch m = app::compare_pair_lists(reference, pairs);
+    EXPECT_EQ(m.missing, 1u);
+    EXPECT_EQ(m.extra, 2u);
+    const app::BenchMismatch same = app::compare_pair_lists(reference, reference);
+    EXPECT_EQ(same.missing + same.extra, 0u);
+}
+
+}  // namespace
+}  // namespace collidescope
