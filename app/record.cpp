@@ -1,0 +1,159 @@
+// `collidescope record`: runs a scene's frames through a method and writes the session trace
+// to one HDF5 file (recorder/, docs/recording.md).
+
+#include "commands.hpp"
+#include "frame_range.hpp"
+#include "progress.hpp"
+#include "scene_input.hpp"
+#include "size_option.hpp"
+
+#include "collidescope/error.hpp"
+#include "collidescope/pipeline.hpp"
+#include "collidescope/recorder/recorder.hpp"
+#include "collidescope/scene.hpp"
+
+#include <charconv>
+#include <memory>
+
+namespace collidescope::app {
+namespace {
+
+struct RecordOptions {
+    std::vector<std::string> inputs;
+    std::string scene;              ///< built-in scene NAME[:PRESET], instead of inputs
+    std::string output;             ///< -o, the HDF5 file
+    std::string method = "brute";
+    bool self = false;
+    bool no_self = false;
+    std::string frames;             ///< "" = every frame
+    int threads = 0;                ///< 0 = all hardware threads
+    std::string depth = "off";      ///< off | every:N
+    std::string budget;             ///< "" = no bound
+    std::string queue = "256M";     ///< writer queue memory cap
+    bool quiet = false;
+};
+
+constexpr const char* k_footer = R"(Writes one HDF5 file (schema: docs/recording.md; read it with h5py, h5dump,
+`collidescope inspect`, `validate`, `compare` or the scripts in scripts/). The file is written
+frame by frame in SWMR mode: a killed recording keeps every finished frame.
+--depth every:N asks for the GPU cull's depth buffers every Nth frame; no method has a GPU cull
+yet (Mode 2 comes later), so there is nothing to record and the option is only stored.
+--budget SIZE (e.g. 50M, 2G; K/M/G are powers of 1024) keeps the file near SIZE by dropping
+the vertex positions of more and more frames (depth buffers would go first); the summary
+says what was dropped.
+Exit codes: 0 recorded (whatever collided), 2 error.)";
+
+// --depth: "off" or "every:N" with N >= 1.
+void check_depth(const std::string& depth) {
+    if (depth == "off") return;
+    const std::string prefix = "every:";
+    unsigned every = 0;
+    const char* begin = depth.data() + prefix.size();
+    const char* end = depth.data() + depth.size();
+    const bool ok = depth.rfind(prefix, 0) == 0 && depth.size() > prefix.size() &&
+                    std::from_chars(begin, end, every).ptr == end && every >= 1;
+    if (!ok) throw InputError("--depth must be 'off' or 'every:N' with N >= 1, not '" + depth + "'");
+}
+
+recorder::SessionInfo session_info(const Scene& scene, const RecordOptions& options, const PipelineConfig& config,
+                                   const FrameRange& range) {
+    recorder::SessionInfo info;
+    info.scene = scene.name;
+    info.preset = scene.preset;
+    info.seed = scene.seed;
+    info.method = config.method;
+    info.self_collision = config.self_collision;
+    info.threads = config.threads;
+    info.frame_begin = range.begin;
+    info.frame_end = range.end;
+    info.depth = options.depth;
+    info.tool_version = COLLIDESCOPE_VERSION;
+    info.git_revision = COLLIDESCOPE_GIT_REVISION;
+    for (std::uint32_t k = 0; k < scene.source->object_count(); ++k) info.object_names.push_back(scene.source->object_name(k));
+    return info;
+}
+
+std::string summary_line(const recorder::RecordSummary& summary, const std::string& path, std::uint64_t budget) {
+    std::string line = "recorded " + std::to_string(summary.frames) + " frames to " + path + " (" +
+                       format_size(summary.file_bytes) + ")";
+    if (budget > 0) {
+        line += "; budget " + format_size(budget) + ": ";
+        line += summary.positions_dropped == 0
+                    ? "nothing dropped"
+                    : "dropped the vertex positions of " + std::to_string(summary.positions_dropped) +
+                          " frames (kept every " + std::to_string(summary.positions_stride) + "th frame at the end)";
+        if (summary.file_bytes > budget) line += "; still over budget (pairs and stats alone exceed it)";
+    }
+    return line;
+}
+
+int run_record(const RecordOptions& options) {
+    check_depth(options.depth);
+    const std::uint64_t budget = options.budget.empty() ? 0 : parse_size(options.budget, "--budget");
+    const Scene scene = open_scene(options.inputs, options.scene);
+    const FrameRange range = parse_frame_range(options.frames, scene.source->frame_count());
+    const PipelineConfig config{options.method, resolve_self_collision(options.self, options.no_self, scene),
+                                options.threads};
+    Pipeline pipeline(config);
+    Frame frame = scene.source->frame(range.begin);
+
+    recorder::RecorderConfig recorder_config;
+    recorder_config.path = options.output;
+    recorder_config.budget_bytes = budget;
+    recorder_config.queue_bytes = parse_size(options.queue, "--queue-memory");
+    recorder::Recorder recorder(recorder_config, session_info(scene, options, config, range), frame);
+    pipeline.add_sink(recorder);
+
+    Progress progress(range.end - range.begin);
+    if (!options.quiet) {
+        progress.log("recording scene '" + scene.name + "': " + std::to_string(scene.source->object_count()) +
+                     " objects, frames " + std::to_string(range.begin) + ".." + std::to_string(range.end - 1) +
+                     ", method " + config.method + " -> " + options.output);
+    }
+    for (std::uint32_t f = range.begin;;) {
+        pipeline.process(frame);
+        progress.advance();
+        if (++f == range.end) break;
+        frame = scene.source->frame(f);
+    }
+    const recorder::RecordSummary summary = recorder.finish();
+    progress.finish();
+    progress.log(summary_line(summary, options.output, budget));
+    return 0;
+}
+
+}  // namespace
+
+Command add_record_command(CLI::App& app) {
+    auto options = std::make_shared<RecordOptions>();
+    CLI::App* record = app.add_subcommand("record", "Record a session: every frame's pairs, stats and geometry to HDF5");
+    record->footer(k_footer);
+    record->add_option("inputs", options->inputs, "Mesh files, frame patterns or scene.json manifests (as for check)")
+        ->type_name("INPUT");
+    record->add_option("--scene", options->scene, "A built-in scene instead of INPUT files: NAME[:PRESET] (" +
+                                                      builtin_scene_list() + ")")
+        ->type_name("NAME[:PRESET]");
+    record->add_option("-o,--output", options->output, "The HDF5 file to write (replaced if it exists)")
+        ->required()
+        ->type_name("FILE");
+    record->add_option("--method", options->method, "Collision method")
+        ->check(CLI::IsMember(method_names()))
+        ->capture_default_str();
+    CLI::Option* self = record->add_flag("--self", options->self, "Self-collision on (default: the scene's setting)");
+    record->add_flag("--no-self", options->no_self, "Self-collision off (default: the scene's setting)")->excludes(self);
+    record->add_option("--frames", options->frames, "Frames to record: A:B (half-open), A:, :B or N")->type_name("A:B");
+    record->add_option("--threads", options->threads, "Worker threads (0 = all hardware threads)")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+    record->add_option("--depth", options->depth, "GPU cull depth buffers: off or every:N (none before Mode 2)")
+        ->capture_default_str();
+    record->add_option("--budget", options->budget, "Bound the file size (decimates positions), e.g. 100M")
+        ->type_name("SIZE");
+    record->add_option("--queue-memory", options->queue, "Memory cap of frames waiting for the writer thread")
+        ->type_name("SIZE")
+        ->capture_default_str();
+    record->add_flag("-q,--quiet", options->quiet, "Only the final line on stderr");
+    return {record, [options] { return run_record(*options); }};
+}
+
+}  // namespace collidescope::app

@@ -1,0 +1,98 @@
+#pragma once
+/// Reading a recording back (schema.hpp, docs/recording.md).
+///
+/// Opening checks that the file is HDF5, is a collidescope recording and has a schema major
+/// version this reader knows, and counts the complete frames: the smallest length over every
+/// per-frame dataset, so a recording killed mid-frame reads up to its last finished frame. Every
+/// failure is an InputError that names the file (and the dataset or frame). Reads go to the
+/// file on each call; one thread at a time.
+
+#include "collidescope/types.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace collidescope::recorder {
+
+/// One topology of one object: triangles rows [first_row, first_row + triangle_count) of
+/// /objects/<k>/triangles, in force from scene frame `from_frame`.
+struct TopologyInfo {
+    std::uint32_t from_frame = 0;
+    std::uint32_t vertex_count = 0;
+    std::uint64_t first_row = 0;
+    std::uint64_t triangle_count = 0;
+};
+
+struct ObjectInfo {
+    std::string name;
+    std::vector<TopologyInfo> topologies;  ///< in order of from_frame
+};
+
+/// A per-frame series (one dataset of /frames/ms or /frames/counts).
+template <class T>
+struct Series {
+    std::string name;
+    std::string unit;
+    std::vector<T> values;  ///< one per complete frame
+};
+
+class Recording {
+public:
+    /// Opens `path` read-only (SWMR read when the file allows it, so a recording being
+    /// written or killed opens too). Throws InputError naming the file.
+    explicit Recording(const std::filesystem::path& path);
+    ~Recording();
+    Recording(Recording&&) noexcept;
+    Recording& operator=(Recording&&) noexcept;
+
+    const std::string& path() const;
+    std::int64_t version_major() const;
+    std::int64_t version_minor() const;
+    /// True when the writer closed the file cleanly (attribute `finished`).
+    bool finished() const;
+    /// Frames whose every dataset row is present.
+    std::uint64_t frames_complete() const;
+    /// Root attributes as text, in the file's order.
+    std::vector<std::pair<std::string, std::string>> metadata() const;
+
+    const std::vector<ObjectInfo>& objects() const;
+    /// Scene frame number of every complete frame.
+    std::vector<std::uint32_t> frame_indices() const;
+    /// Method name of every complete frame.
+    std::vector<std::string> frame_methods() const;
+    std::vector<Series<double>> stage_ms() const;
+    std::vector<Series<std::uint64_t>> counts() const;
+
+    /// Colliding pairs of recorded frame `row` (< frames_complete()).
+    std::vector<TrianglePair> pairs(std::uint64_t row) const;
+    /// Number of colliding pairs per complete frame (from the offsets).
+    std::vector<std::uint64_t> pair_counts() const;
+    /// x y z per vertex of object `object` at row `row`; empty when --budget dropped them.
+    std::vector<float> positions(std::uint32_t object, std::uint64_t row) const;
+    /// Index into objects()[object].topologies of the topology in force at scene frame `frame`.
+    std::size_t topology_at(std::uint32_t object, std::uint32_t frame) const;
+    /// Triangles of one topology of one object.
+    std::vector<TriIndices> triangles(std::uint32_t object, std::size_t topology) const;
+
+    /// Every dataset's path, in the file (for validate and inspect).
+    std::vector<std::string> dataset_paths() const;
+    /// The `unit` attribute of a dataset ("" when missing).
+    std::string unit_of(const std::string& dataset) const;
+    /// Rows (first dimension) of a dataset.
+    std::uint64_t rows_of(const std::string& dataset) const;
+    /// Bytes a dataset occupies in the file.
+    std::uint64_t storage_of(const std::string& dataset) const;
+    /// Reads a whole 1-D integer dataset (offsets, indices) converted to uint64.
+    std::vector<std::uint64_t> read_u64(const std::string& dataset) const;
+
+    struct Impl;
+
+private:
+    std::unique_ptr<Impl> m_impl;
+};
+
+}  // namespace collidescope::recorder

@@ -1,0 +1,77 @@
+#pragma once
+/// The recorder: a TraceSink that writes one HDF5 file per session (schema.hpp,
+/// docs/recording.md).
+///
+/// on_frame runs on the engine's thread and only copies the frame into a bounded queue; a
+/// writer thread appends it to the file and flushes, frame by frame, in SWMR mode, so a killed
+/// process leaves every finished frame readable. Not thread-safe: one engine thread calls it.
+
+#include "collidescope/trace.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace collidescope::recorder {
+
+/// What the file's root attributes say about the session.
+struct SessionInfo {
+    std::string scene;                      ///< scene name (built-in name or input summary)
+    std::string preset;                     ///< generator preset ("" for files)
+    std::uint64_t seed = 0;                 ///< generator seed (0 for files)
+    std::string method;                     ///< method requested
+    bool self_collision = false;
+    int threads = 0;                        ///< requested worker threads (0 = all hardware threads)
+    std::uint32_t frame_begin = 0;          ///< first scene frame recorded
+    std::uint32_t frame_end = 0;            ///< one past the last scene frame to record
+    std::string depth = "off";              ///< --depth: "off" or "every:N" (nothing to record before Mode 2)
+    std::string gl_renderer;                ///< GL_RENDERER of the cull's context ("" without GPU cull)
+    std::string tool_version;               ///< COLLIDESCOPE_VERSION
+    std::string git_revision;               ///< COLLIDESCOPE_GIT_REVISION
+    std::vector<std::string> object_names;  ///< in input order
+};
+
+/// Options of one recording.
+struct RecorderConfig {
+    std::filesystem::path path;                 ///< the file to create (truncated if it exists)
+    std::size_t queue_bytes = 256u << 20;       ///< memory cap of frames waiting for the writer
+    std::uint64_t budget_bytes = 0;             ///< file size bound (0 = none): positions decimated to fit
+    int deflate_level = 4;                      ///< gzip level of compressed datasets (0-9)
+};
+
+/// What a finished recording did.
+struct RecordSummary {
+    std::uint64_t frames = 0;              ///< frames written
+    std::uint64_t file_bytes = 0;          ///< final file size
+    std::uint32_t positions_stride = 1;    ///< positions kept every Nth frame (1 = all; --budget)
+    std::uint64_t positions_dropped = 0;   ///< frames whose positions were dropped (--budget)
+    std::uint64_t queue_peak_bytes = 0;    ///< largest queue held
+};
+
+class Recorder final : public TraceSink {
+public:
+    /// Creates the file with every group, dataset and attribute, switches to SWMR writing and
+    /// starts the writer thread. `first_frame` (the first frame to be recorded) sizes the
+    /// chunks; it is not recorded here. Throws InputError naming the file on failure.
+    Recorder(RecorderConfig config, SessionInfo session, const Frame& first_frame);
+    /// Stops the writer (dropping nothing already queued) and closes the file, if finish() was
+    /// not called; errors are swallowed there.
+    ~Recorder() override;
+    Recorder(const Recorder&) = delete;
+    Recorder& operator=(const Recorder&) = delete;
+
+    /// Copies the frame into the queue (blocks while the queue is full). Rethrows, as
+    /// InputError, an error the writer thread met.
+    void on_frame(const FrameReport& report) override;
+    /// Writes what is queued, closes the file and marks it finished. Throws InputError on
+    /// any write failure.
+    RecordSummary finish();
+
+private:
+    struct State;
+    std::unique_ptr<State> m_state;
+};
+
+}  // namespace collidescope::recorder

@@ -1,0 +1,64 @@
+#pragma once
+/// The recording's HDF5 schema in one place: the version, every group and dataset name and
+/// every unit. docs/recording.md describes the same layout for h5py and h5dump users.
+///
+/// Per-frame datasets are 1-D (or rows of a flat array) and extensible along the frame axis;
+/// row r of every per-frame dataset is recorded frame r, whose scene frame number is
+/// /frames/index[r]. Flat arrays (pairs, positions, triangles) are indexed through CSR offsets
+/// with one more entry than rows (offsets[0] == 0). No variable-length types in datasets.
+
+#include <cstdint>
+#include <string>
+
+namespace collidescope::recorder::schema {
+
+/// Value of the root attribute `schema`: says the file is a collidescope recording.
+inline constexpr const char* k_schema_name = "collidescope-trace";
+/// Major: readers refuse files with a newer major (layout changed incompatibly). Minor: only
+/// additions (new datasets or attributes); older readers ignore what they do not know.
+inline constexpr std::int64_t k_version_major = 1;
+inline constexpr std::int64_t k_version_minor = 0;
+
+// Root attributes.
+inline constexpr const char* k_attr_schema = "schema";
+inline constexpr const char* k_attr_version_major = "schema_version_major";
+inline constexpr const char* k_attr_version_minor = "schema_version_minor";
+inline constexpr const char* k_attr_finished = "finished";  ///< 1 once closed cleanly (absent until then)
+inline constexpr const char* k_attr_frames_recorded = "frames_recorded";  ///< set with `finished`
+inline constexpr const char* k_attr_positions_stride = "positions_stride";  ///< set with `finished`
+/// Every dataset's unit, H5MD style: a string attribute named `unit`.
+inline constexpr const char* k_attr_unit = "unit";
+/// On each /objects/<k> group: the object's name.
+inline constexpr const char* k_attr_name = "name";
+
+// Groups and datasets.
+inline constexpr const char* k_frames = "/frames";
+inline constexpr const char* k_frame_index = "/frames/index";    ///< uint32, scene frame number
+inline constexpr const char* k_frame_method = "/frames/method";  ///< enum (uint8) of method names
+inline constexpr const char* k_frame_ms = "/frames/ms";          ///< group: float64 per stage
+inline constexpr const char* k_frame_counts = "/frames/counts";  ///< group: uint64 per count
+inline constexpr const char* k_collisions = "/collisions";
+inline constexpr const char* k_pairs = "/collisions/pairs";           ///< (P, 4) uint32
+inline constexpr const char* k_pair_offsets = "/collisions/offsets";  ///< (F + 1) uint64
+inline constexpr const char* k_objects = "/objects";
+// Inside /objects/<k>/ (k = 0, 1, ... in input order):
+inline constexpr const char* k_triangles = "triangles";                  ///< (T, 3) uint32
+inline constexpr const char* k_topology_offsets = "topology_offsets";    ///< (R + 1) uint64
+inline constexpr const char* k_topology_from_frame = "topology_from_frame";  ///< (R) uint32
+inline constexpr const char* k_topology_vertex_count = "topology_vertex_count";  ///< (R) uint32
+inline constexpr const char* k_positions = "positions";             ///< (N, 3) float32
+inline constexpr const char* k_vertex_offsets = "vertex_offsets";   ///< (F + 1) uint64
+
+// Units.
+inline constexpr const char* k_unit_ms = "ms";
+/// Dimensionless: counts, indices, offsets (UDUNITS' "1").
+inline constexpr const char* k_unit_none = "1";
+/// Vertex positions keep the input's coordinates; their length unit is whatever the input used.
+inline constexpr const char* k_unit_length = "input length unit";
+
+/// "/objects/<k>".
+inline std::string object_group(std::uint32_t object) {
+    return std::string(k_objects) + "/" + std::to_string(object);
+}
+
+}  // namespace collidescope::recorder::schema

@@ -1,0 +1,62 @@
+#pragma once
+// A frame as the writer thread needs it (copied off the engine's spans), and the bounded queue
+// between the engine's thread and the writer thread.
+
+#include "collidescope/scene.hpp"
+#include "collidescope/types.hpp"
+
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+namespace collidescope::recorder {
+
+/// One object of one frame.
+struct ObjectRecord {
+    std::shared_ptr<const Topology> new_topology;  ///< set when the topology changed (or frame 0)
+    std::vector<float> positions;                  ///< x y z per vertex, float32
+};
+
+/// One frame, owned.
+struct FrameRecord {
+    std::uint32_t frame = 0;              ///< scene frame number
+    std::uint8_t method = 0;              ///< code in the method enum
+    std::vector<double> ms;               ///< for_each_stage order
+    std::vector<std::uint64_t> counts;    ///< for_each_count order
+    std::vector<TrianglePair> pairs;
+    std::vector<ObjectRecord> objects;
+
+    /// Bytes held (what the queue's cap counts).
+    std::size_t bytes() const;
+};
+
+/// Bounded by bytes: push blocks while the queue holds more than the cap (one frame is always
+/// admitted, so a frame larger than the cap still passes). close() ends the stream.
+class FrameQueue {
+public:
+    explicit FrameQueue(std::size_t cap_bytes) : m_cap(cap_bytes) {}
+
+    /// Blocks while full; returns false (dropping the frame) once closed.
+    bool push(FrameRecord record);
+    /// Blocks until a frame or close; nullopt when closed and empty.
+    std::optional<FrameRecord> pop();
+    /// No more pushes; pop drains what is left. With `discard`, what is queued is dropped.
+    void close(bool discard = false);
+    std::size_t peak_bytes() const;
+
+private:
+    mutable std::mutex m_mutex;
+    std::condition_variable m_not_full;
+    std::condition_variable m_not_empty;
+    std::deque<std::pair<FrameRecord, std::size_t>> m_frames;
+    std::size_t m_cap;
+    std::size_t m_bytes = 0;
+    std::size_t m_peak = 0;
+    bool m_closed = false;
+};
+
+}  // namespace collidescope::recorder

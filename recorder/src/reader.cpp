@@ -1,0 +1,160 @@
+// Reading a recording back.
+
+#include "collidescope/recorder/reader.hpp"
+
+#include "recording_impl.hpp"
+
+#include "collidescope/recorder/schema.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace collidescope::recorder {
+
+void Recording::Impl::open_file() {
+    h5::silence();
+    const std::string& path = where.file();
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) where.fail("no such file");
+    if (H5Fis_hdf5(path.c_str()) <= 0) {
+        where.fail("not an HDF5 file (or a corrupt or truncated one)");
+    }
+    // SWMR read opens a file still being written or left by a killed writer; files in older
+    // formats refuse it and open plainly.
+    hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, H5P_DEFAULT);
+    if (id < 0) id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    file = where.own(id, H5Fclose, "cannot open the HDF5 file (corrupt or truncated?)");
+}
+
+void Recording::Impl::check_schema() {
+    const std::optional<std::string> name = h5::read_string_attr(where, file.get(), schema::k_attr_schema);
+    if (!name || *name != schema::k_schema_name) {
+        where.fail("not a collidescope recording (no '" + std::string(schema::k_attr_schema) + "' = '" +
+                   schema::k_schema_name + "' attribute on /)");
+    }
+    const std::optional<std::int64_t> major = h5::read_int_attr(where, file.get(), schema::k_attr_version_major);
+    const std::optional<std::int64_t> minor = h5::read_int_attr(where, file.get(), schema::k_attr_version_minor);
+    if (!major || !minor) where.fail("recording without a schema version");
+    version_major = *major;
+    version_minor = *minor;
+    if (*major > schema::k_version_major) {
+        where.fail("recording schema version " + std::to_string(*major) + "." + std::to_string(*minor) +
+                   " is newer than this collidescope reads (" + std::to_string(schema::k_version_major) +
+                   ".x); use a newer collidescope");
+    }
+    if (*major < 1) where.fail("bad schema version " + std::to_string(*major));
+    finished = h5::read_int_attr(where, file.get(), schema::k_attr_finished).value_or(0) == 1;
+}
+
+void Recording::Impl::count_frames() {
+    std::uint64_t n = rows(schema::k_frame_index);
+    n = std::min(n, rows(schema::k_frame_method));
+    for (const char* group : {schema::k_frame_ms, schema::k_frame_counts}) {
+        for (const std::string& member : group_members(group)) n = std::min(n, rows(std::string(group) + "/" + member));
+    }
+    // Offsets hold one more entry than frames.
+    const auto offset_frames = [&](const std::string& path) {
+        const std::uint64_t r = rows(path);
+        if (r == 0) where.fail(path + " is empty (it starts with 0)");
+        return r - 1;
+    };
+    n = std::min(n, offset_frames(schema::k_pair_offsets));
+    const std::vector<std::string> objects_listed = group_members(schema::k_objects);
+    for (std::uint32_t k = 0; k < objects_listed.size(); ++k) {
+        n = std::min(n, offset_frames(schema::object_group(k) + "/" + schema::k_vertex_offsets));
+    }
+    frames = n;
+}
+
+void Recording::Impl::read_objects() {
+    const std::size_t count = group_members(schema::k_objects).size();
+    for (std::uint32_t k = 0; k < count; ++k) {
+        const std::string prefix = schema::object_group(k) + "/";
+        ObjectInfo info;
+        const h5::Id group = h5::open_group(where, file.get(), schema::object_group(k));
+        info.name = h5::read_string_attr(where, group.get(), schema::k_attr_name).value_or(std::to_string(k));
+        const std::vector<std::uint64_t> offsets =
+            read_all<std::uint64_t>(prefix + schema::k_topology_offsets, H5T_NATIVE_UINT64, 1u << 24);
+        const std::vector<std::uint32_t> from =
+            read_all<std::uint32_t>(prefix + schema::k_topology_from_frame, H5T_NATIVE_UINT32, 1u << 24);
+        const std::vector<std::uint32_t> vertices =
+            read_all<std::uint32_t>(prefix + schema::k_topology_vertex_count, H5T_NATIVE_UINT32, 1u << 24);
+        const std::uint64_t triangle_rows = rows(prefix + schema::k_triangles);
+        // A writer killed mid-topology may leave trailing entries: keep the complete ones.
+        const std::size_t revisions = std::min({from.size(), vertices.size(), offsets.empty() ? 0 : offsets.size() - 1});
+        for (std::size_t r = 0; r < revisions; ++r) {
+            if (offsets[r] > offsets[r + 1] || offsets[r + 1] > triangle_rows) {
+                where.fail(prefix + std::string(schema::k_topology_offsets) + ": entry " + std::to_string(r + 1) +
+                           " out of range");
+            }
+            info.topologies.push_back({from[r], vertices[r], offsets[r], offsets[r + 1] - offsets[r]});
+        }
+        objects.push_back(std::move(info));
+    }
+}
+
+Recording::Recording(const std::filesystem::path& path) : m_impl(std::make_unique<Impl>(path.string())) {
+    m_impl->open_file();
+    m_impl->check_schema();
+    m_impl->count_frames();
+    m_impl->read_objects();
+}
+
+Recording::~Recording() = default;
+Recording::Recording(Recording&&) noexcept = default;
+Recording& Recording::operator=(Recording&&) noexcept = default;
+
+const std::string& Recording::path() const { return m_impl->where.file(); }
+std::int64_t Recording::version_major() const { return m_impl->version_major; }
+std::int64_t Recording::version_minor() const { return m_impl->version_minor; }
+bool Recording::finished() const { return m_impl->finished; }
+std::uint64_t Recording::frames_complete() const { return m_impl->frames; }
+const std::vector<ObjectInfo>& Recording::objects() const { return m_impl->objects; }
+
+std::vector<std::uint32_t> Recording::frame_indices() const {
+    return m_impl->read_all<std::uint32_t>(schema::k_frame_index, H5T_NATIVE_UINT32, m_impl->frames);
+}
+
+std::vector<std::uint64_t> Recording::read_u64(const std::string& dataset) const {
+    return m_impl->read_all<std::uint64_t>(dataset, H5T_NATIVE_UINT64, std::numeric_limits<std::uint64_t>::max());
+}
+
+std::vector<std::string> Recording::frame_methods() const {
+    const Impl& impl = *m_impl;
+    const std::string path = schema::k_frame_method;
+    const h5::Id d = impl.dataset(path);
+    const h5::Id type = impl.where.own(H5Dget_type(d.get()), H5Tclose, "cannot read the type of " + path);
+    if (H5Tget_class(type.get()) != H5T_ENUM || H5Tget_size(type.get()) != 1) impl.where.fail(path + " is not a uint8 enum");
+    const h5::Id native = impl.where.own(H5Tget_native_type(type.get(), H5T_DIR_ASCEND), H5Tclose, "bad type of " + path);
+    std::vector<std::uint8_t> codes(impl.frames);
+    h5::read_rows(impl.where, d.get(), path, native.get(), 0, codes.size(), codes.data());
+    std::vector<std::string> names;
+    for (const std::uint8_t code : codes) {
+        char name[256] = {};
+        if (H5Tenum_nameof(native.get(), &code, name, sizeof name) < 0) {
+            impl.where.fail(path + ": value " + std::to_string(code) + " is not in its enum");
+        }
+        names.emplace_back(name);
+    }
+    return names;
+}
+
+std::vector<Series<double>> Recording::stage_ms() const {
+    std::vector<Series<double>> out;
+    for (const std::string& name : m_impl->group_members(schema::k_frame_ms)) {
+        const std::string path = std::string(schema::k_frame_ms) + "/" + name;
+        out.push_back({name, unit_of(path), m_impl->read_all<double>(path, H5T_NATIVE_DOUBLE, m_impl->frames)});
+    }
+    return out;
+}
+
+std::vector<Series<std::uint64_t>> Recording::counts() const {
+    std::vector<Series<std::uint64_t>> out;
+    for (const std::string& name : m_impl->group_members(schema::k_frame_counts)) {
+        const std::string path = std::string(schema::k_frame_counts) + "/" + name;
+        out.push_back({name, unit_of(path), m_impl->read_all<std::uint64_t>(path, H5T_NATIVE_UINT64, m_impl->frames)});
+    }
+    return out;
+}
+
+}  // namespace collidescope::recorder

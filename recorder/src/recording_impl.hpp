@@ -1,0 +1,49 @@
+#pragma once
+// The reader's state, shared by reader.cpp and reader_data.cpp.
+
+#include "h5.hpp"
+
+#include "collidescope/recorder/reader.hpp"
+
+#include <algorithm>
+
+namespace collidescope::recorder {
+
+struct Recording::Impl {
+    h5::Where where;
+    h5::Id file;
+    std::int64_t version_major = 0;
+    std::int64_t version_minor = 0;
+    bool finished = false;
+    std::uint64_t frames = 0;
+    std::vector<ObjectInfo> objects;
+
+    explicit Impl(const std::string& path) : where(path) {}
+
+    h5::Id dataset(const std::string& path) const { return h5::open_dataset(where, file.get(), path); }
+    std::uint64_t rows(const std::string& path) const {
+        const h5::Id d = dataset(path);
+        const std::vector<hsize_t> dims = h5::shape(where, d.get(), path);
+        return dims.empty() ? 0 : dims[0];
+    }
+    template <class T>
+    std::vector<T> read_all(const std::string& path, hid_t mem_type, std::uint64_t limit) const {
+        const h5::Id d = dataset(path);
+        const std::vector<hsize_t> dims = h5::shape(where, d.get(), path);
+        if (dims.size() != 1) where.fail(path + " is not 1-D");
+        std::vector<T> values(std::min<std::uint64_t>(dims[0], limit));
+        h5::read_rows(where, d.get(), path, mem_type, 0, values.size(), values.data());
+        return values;
+    }
+
+    void open_file();
+    void check_schema();
+    void count_frames();
+    void read_objects();
+    std::vector<std::string> group_members(const std::string& group) const {
+        const h5::Id g = h5::open_group(where, file.get(), group);
+        return h5::member_names(where, g.get(), group);
+    }
+};
+
+}  // namespace collidescope::recorder

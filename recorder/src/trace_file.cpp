@@ -1,0 +1,206 @@
+// The HDF5 side of the recorder (layout: schema.hpp, docs/recording.md).
+
+#include "trace_file.hpp"
+
+#include "collidescope/recorder/schema.hpp"
+#include "collidescope/stats.hpp"
+
+#include <ctime>
+
+namespace collidescope::recorder {
+namespace {
+
+constexpr hsize_t k_frame_chunk = 256;       // rows per chunk of 1-D per-frame datasets (2 KiB)
+constexpr hsize_t k_pair_chunk = 8192;       // pairs per chunk (128 KiB)
+constexpr hsize_t k_max_chunk_rows = 1u << 20;
+
+hsize_t chunk_rows(std::size_t rows) {
+    return std::clamp<hsize_t>(static_cast<hsize_t>(rows), 1, k_max_chunk_rows);
+}
+
+std::string utc_now() {
+    const std::time_t now = std::time(nullptr);
+    std::tm parts{};
+    gmtime_r(&now, &parts);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &parts);
+    return text;
+}
+
+}  // namespace
+
+TraceFile::TraceFile(const std::filesystem::path& path, const SessionInfo& session, const Frame& first,
+                     std::span<const std::string> methods, int deflate_level)
+    : m_where(path.string()), m_deflate(deflate_level) {
+    h5::silence();
+    const h5::Id fapl = m_where.own(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create a property list");
+    // SWMR needs the latest file format.
+    m_where.check(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST),
+                  "cannot select the latest file format");
+    m_file = m_where.own(H5Fcreate(m_where.file().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose,
+                         "cannot create the recording (is the directory writable?)");
+    write_metadata(session);
+    create_frames(methods);
+    create_objects(session, first, deflate_level);
+    m_where.check(H5Fstart_swmr_write(m_file.get()), "cannot start SWMR writing");
+}
+
+TraceFile::Column TraceFile::make_column(const std::string& path, const h5::ExtensibleSpec& spec, hid_t loc) {
+    Column column;
+    column.path = path;
+    column.dataset = h5::create_extensible(m_where, loc < 0 ? m_file.get() : loc, path, spec);
+    return column;
+}
+
+void TraceFile::write_metadata(const SessionInfo& session) {
+    const hid_t root = m_file.get();
+    h5::write_attr(m_where, root, schema::k_attr_schema, std::string(schema::k_schema_name));
+    h5::write_attr(m_where, root, schema::k_attr_version_major, schema::k_version_major);
+    h5::write_attr(m_where, root, schema::k_attr_version_minor, schema::k_version_minor);
+    h5::write_attr(m_where, root, "tool_version", session.tool_version);
+    h5::write_attr(m_where, root, "git_revision", session.git_revision);
+    h5::write_attr(m_where, root, "created", utc_now());
+    h5::write_attr(m_where, root, "scene", session.scene);
+    h5::write_attr(m_where, root, "scene_preset", session.preset);
+    h5::write_attr(m_where, root, "scene_seed", static_cast<std::int64_t>(session.seed));
+    h5::write_attr(m_where, root, "method", session.method);
+    h5::write_attr(m_where, root, "self_collision", std::int64_t{session.self_collision ? 1 : 0});
+    h5::write_attr(m_where, root, "threads", std::int64_t{session.threads});
+    h5::write_attr(m_where, root, "frame_begin", std::int64_t{session.frame_begin});
+    h5::write_attr(m_where, root, "frame_end", std::int64_t{session.frame_end});
+    h5::write_attr(m_where, root, "depth", session.depth);
+    h5::write_attr(m_where, root, "gl_renderer", session.gl_renderer);
+    h5::write_attr(m_where, root, "object_count", static_cast<std::int64_t>(session.object_names.size()));
+}
+
+void TraceFile::create_frames(std::span<const std::string> methods) {
+    h5::create_group(m_where, m_file.get(), schema::k_frames);
+    m_index = make_column(schema::k_frame_index, {H5T_STD_U32LE, 1, k_frame_chunk, 0, schema::k_unit_none});
+    m_method_type = m_where.own(H5Tenum_create(H5T_NATIVE_UINT8), H5Tclose, "cannot create the method enum");
+    for (std::size_t code = 0; code < methods.size(); ++code) {
+        const auto value = static_cast<std::uint8_t>(code);
+        m_where.check(H5Tenum_insert(m_method_type.get(), methods[code].c_str(), &value),
+                      "cannot add method " + methods[code] + " to the enum");
+    }
+    m_method = make_column(schema::k_frame_method, {m_method_type.get(), 1, k_frame_chunk, 0, schema::k_unit_none});
+    h5::create_group(m_where, m_file.get(), schema::k_frame_ms);
+    for_each_stage(StageTimes{}, [&](const char* name, double) {
+        m_ms.push_back(make_column(std::string(schema::k_frame_ms) + "/" + name,
+                                   {H5T_IEEE_F64LE, 1, k_frame_chunk, 0, schema::k_unit_ms}));
+    });
+    h5::create_group(m_where, m_file.get(), schema::k_frame_counts);
+    for_each_count(FrameCounts{}, [&](const char* name, std::uint64_t) {
+        m_counts.push_back(make_column(std::string(schema::k_frame_counts) + "/" + name,
+                                       {H5T_STD_U64LE, 1, k_frame_chunk, 0, schema::k_unit_none}));
+    });
+    h5::create_group(m_where, m_file.get(), schema::k_collisions);
+    m_pairs = make_column(schema::k_pairs, {H5T_STD_U32LE, 4, k_pair_chunk, m_deflate, schema::k_unit_none});
+    m_pair_offsets = make_column(schema::k_pair_offsets, {H5T_STD_U64LE, 1, k_frame_chunk, 0, schema::k_unit_none});
+    const std::uint64_t zero = 0;
+    append_value(m_pair_offsets, H5T_NATIVE_UINT64, &zero);
+}
+
+void TraceFile::create_objects(const SessionInfo& session, const Frame& first, int deflate_level) {
+    h5::create_group(m_where, m_file.get(), schema::k_objects);
+    for (std::uint32_t k = 0; k < first.objects.size(); ++k) {
+        const std::string group_path = schema::object_group(k);
+        const h5::Id group = h5::create_group(m_where, m_file.get(), group_path);
+        h5::write_attr(m_where, group.get(), schema::k_attr_name,
+                       k < session.object_names.size() ? session.object_names[k] : std::to_string(k));
+        const ObjectFrame& object = first.objects[k];
+        const std::string prefix = group_path + "/";
+        ObjectColumns columns;
+        columns.triangles = make_column(prefix + schema::k_triangles,
+                                        {H5T_STD_U32LE, 3, chunk_rows(object.triangle_count()), deflate_level,
+                                         schema::k_unit_none});
+        columns.topology_offsets = make_column(prefix + schema::k_topology_offsets,
+                                               {H5T_STD_U64LE, 1, 64, 0, schema::k_unit_none});
+        columns.topology_from_frame = make_column(prefix + schema::k_topology_from_frame,
+                                                  {H5T_STD_U32LE, 1, 64, 0, schema::k_unit_none});
+        columns.topology_vertex_count = make_column(prefix + schema::k_topology_vertex_count,
+                                                    {H5T_STD_U32LE, 1, 64, 0, schema::k_unit_none});
+        // Chunk = one frame of this object, compressed: the layout the issue fixes.
+        columns.positions = make_column(prefix + schema::k_positions,
+                                        {H5T_IEEE_F32LE, 3, chunk_rows(object.vertices.size()), deflate_level,
+                                         schema::k_unit_length});
+        columns.vertex_offsets = make_column(prefix + schema::k_vertex_offsets,
+                                             {H5T_STD_U64LE, 1, k_frame_chunk, 0, schema::k_unit_none});
+        const std::uint64_t zero = 0;
+        append_value(columns.topology_offsets, H5T_NATIVE_UINT64, &zero);
+        append_value(columns.vertex_offsets, H5T_NATIVE_UINT64, &zero);
+        m_objects.push_back(std::move(columns));
+    }
+}
+
+void TraceFile::append_value(Column& column, hid_t mem_type, const void* value) {
+    h5::append_rows(m_where, column.dataset.get(), column.path, column.length, mem_type, 1, value);
+}
+
+void TraceFile::append_topology(ObjectColumns& columns, const Topology& topology, std::uint32_t frame) {
+    // Rows first, then the offset that makes them visible, then what describes them.
+    h5::append_rows(m_where, columns.triangles.dataset.get(), columns.triangles.path, columns.triangles.length,
+                    H5T_NATIVE_UINT32, topology.triangles.size(), topology.triangles.data());
+    const std::uint64_t end = columns.triangles.length;
+    append_value(columns.topology_offsets, H5T_NATIVE_UINT64, &end);
+    append_value(columns.topology_from_frame, H5T_NATIVE_UINT32, &frame);
+    append_value(columns.topology_vertex_count, H5T_NATIVE_UINT32, &topology.vertex_count);
+}
+
+void TraceFile::append(const FrameRecord& record, bool keep_positions) {
+    if (record.objects.size() != m_objects.size()) {
+        m_where.fail("frame " + std::to_string(record.frame) + " has " + std::to_string(record.objects.size()) +
+                     " objects, the recording " + std::to_string(m_objects.size()));
+    }
+    for (std::size_t k = 0; k < m_objects.size(); ++k) {
+        ObjectColumns& columns = m_objects[k];
+        const ObjectRecord& object = record.objects[k];
+        if (object.new_topology) append_topology(columns, *object.new_topology, record.frame);
+        if (keep_positions) {
+            h5::append_rows(m_where, columns.positions.dataset.get(), columns.positions.path,
+                            columns.positions.length, H5T_NATIVE_FLOAT, object.positions.size() / 3,
+                            object.positions.data());
+        }
+        const std::uint64_t end = columns.positions.length;
+        append_value(columns.vertex_offsets, H5T_NATIVE_UINT64, &end);
+    }
+    static_assert(sizeof(TrianglePair) == 4 * sizeof(std::uint32_t));
+    h5::append_rows(m_where, m_pairs.dataset.get(), m_pairs.path, m_pairs.length, H5T_NATIVE_UINT32,
+                    record.pairs.size(), record.pairs.data());
+    const std::uint64_t pairs_end = m_pairs.length;
+    append_value(m_pair_offsets, H5T_NATIVE_UINT64, &pairs_end);
+    for (std::size_t s = 0; s < m_ms.size(); ++s) append_value(m_ms[s], H5T_NATIVE_DOUBLE, &record.ms[s]);
+    for (std::size_t c = 0; c < m_counts.size(); ++c) append_value(m_counts[c], H5T_NATIVE_UINT64, &record.counts[c]);
+    append_value(m_method, m_method_type.get(), &record.method);
+    // The frame index last: a reader counts a frame complete when every dataset has its row.
+    append_value(m_index, H5T_NATIVE_UINT32, &record.frame);
+    m_where.check(H5Fflush(m_file.get(), H5F_SCOPE_LOCAL), "cannot flush frame " + std::to_string(record.frame));
+}
+
+std::uint64_t TraceFile::file_bytes() const {
+    hsize_t size = 0;
+    m_where.check(H5Fget_filesize(m_file.get(), &size), "cannot read the file size");
+    return size;
+}
+
+void TraceFile::close() {
+    m_index.dataset.reset();
+    m_method.dataset.reset();
+    m_pairs.dataset.reset();
+    m_pair_offsets.dataset.reset();
+    m_ms.clear();
+    m_counts.clear();
+    m_objects.clear();
+    m_method_type.reset();
+    if (m_file.valid() && !m_file.reset()) m_where.fail("cannot close the recording (disk full?)");
+}
+
+void TraceFile::mark_finished(const std::filesystem::path& path, std::uint64_t frames, std::uint32_t positions_stride) {
+    const h5::Where where(path.string());
+    const h5::Id file = where.own(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose,
+                                  "cannot reopen the recording to mark it finished");
+    h5::write_attr(where, file.get(), schema::k_attr_frames_recorded, static_cast<std::int64_t>(frames));
+    h5::write_attr(where, file.get(), schema::k_attr_positions_stride, std::int64_t{positions_stride});
+    h5::write_attr(where, file.get(), schema::k_attr_finished, std::int64_t{1});
+}
+
+}  // namespace collidescope::recorder
