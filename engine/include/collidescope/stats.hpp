@@ -6,7 +6,9 @@
 /// prints them; nothing is measured twice.
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
 
 namespace collidescope {
 
@@ -35,6 +37,8 @@ struct FrameCounts {
     std::uint64_t exact_tests = 0;       ///< triangle-triangle tests run
     std::uint64_t exact_fallbacks = 0;   ///< predicate calls the float filter could not decide
     std::uint64_t colliding_pairs = 0;   ///< confirmed pairs
+    std::uint64_t nodes_visited = 0;     ///< hierarchy node pairs tested + self nodes entered (Mode 1)
+    std::uint64_t rebuilds = 0;          ///< hierarchies built this frame, engine thread or worker (Mode 1)
 };
 
 /// Calls `visit(name, milliseconds)` for every StageTimes field in declaration order. This
@@ -65,6 +69,39 @@ void for_each_count(const FrameCounts& counts, Visitor&& visit) {
     visit("exact_tests", counts.exact_tests);
     visit("exact_fallbacks", counts.exact_fallbacks);
     visit("colliding_pairs", counts.colliding_pairs);
+    visit("nodes_visited", counts.nodes_visited);
+    visit("rebuilds", counts.rebuilds);
+}
+
+/// Bits of AabbFrameInfo::rebuild_reasons (the same values as bvh::RebuildReason).
+enum AabbRebuildReasonBit : std::uint8_t {
+    k_rebuild_initial = 1,   ///< the object had no hierarchy yet
+    k_rebuild_topology = 2,  ///< its triangles changed (always rebuilds)
+    k_rebuild_thesis = 4,    ///< thesis 5.2.1 rule: detection time > 3/4 of a rebuild's time
+    k_rebuild_quality = 8,   ///< SAH cost degraded past the limit since the last build
+};
+
+/// What the AABB hierarchies (Mode 1, method `aabb`) did in one frame, beyond the counts.
+struct AabbFrameInfo {
+    /// OR of the reasons of the rebuilds decided this frame (AabbRebuildReasonBit); 0: none.
+    std::uint8_t rebuild_reasons = 0;
+    std::uint32_t rebuilt_objects = 0;     ///< hierarchies built on the engine thread (ms.rebuild)
+    std::uint32_t background_started = 0;  ///< rebuilds handed to the worker thread
+    std::uint32_t background_swaps = 0;    ///< worker-built hierarchies swapped in (then refit)
+    /// Tree quality: the largest, over the hierarchies used this frame, of SAH cost divided by
+    /// the SAH cost right after that hierarchy's last build (1 = as built; larger = degraded).
+    double tree_quality = 0;
+};
+
+/// "initial,topology,thesis,quality" for the set bits of `reasons` ("" for none).
+inline std::string rebuild_reason_names(std::uint8_t reasons) {
+    std::string names;
+    const std::pair<std::uint8_t, const char*> bits[] = {{k_rebuild_initial, "initial"},
+        {k_rebuild_topology, "topology"}, {k_rebuild_thesis, "thesis"}, {k_rebuild_quality, "quality"}};
+    for (const auto& [bit, name] : bits) {
+        if ((reasons & bit) != 0) names += (names.empty() ? "" : ",") + std::string(name);
+    }
+    return names;
 }
 
 /// Everything one frame reports.
@@ -73,6 +110,7 @@ struct FrameStats {
     std::string method;  ///< the method that produced this frame's pairs
     StageTimes ms;
     FrameCounts counts;
+    std::optional<AabbFrameInfo> aabb;  ///< set by the `aabb` method only
 };
 
 }  // namespace collidescope

@@ -1,6 +1,7 @@
 // The methods `--method` accepts, by name. A new method adds one line to k_methods.
 
 #include "brute/brute_method.hpp"
+#include "bvh/aabb_method.hpp"
 
 #include "collidescope/pipeline.hpp"
 
@@ -17,6 +18,7 @@ struct MethodEntry {
 // In the order method_names() lists them.
 constexpr MethodEntry k_methods[] = {
     {"brute", &make_brute_method},
+    {"aabb", &make_aabb_method},
 };
 
 }  // namespace

@@ -1,0 +1,124 @@
+// build_tree: per-triangle input, one of the builders, the preorder layout, the refit plan,
+// then a refit for the boxes (both builders leave boxes to it).
+
+#include "bvh/build_internal.hpp"
+
+#include "pipeline/stopwatch.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <numeric>
+
+namespace collidescope::bvh {
+namespace detail {
+
+BuildInput make_build_input(std::span<const TriIndices> triangles, std::span<const Vec3> vertices) {
+    BuildInput input;
+    input.boxes.resize(triangles.size());
+    input.centroids.resize(triangles.size());
+    input.centroid_bounds = tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, triangles.size(), 4096), Aabb{},
+        [&](const tbb::blocked_range<std::size_t>& range, Aabb bounds) {
+            for (std::size_t t = range.begin(); t != range.end(); ++t) {
+                const Aabb box = triangle_box(triangles, vertices, static_cast<std::uint32_t>(t));
+                input.boxes[t] = box;
+                Vec3 c;
+                for (int k = 0; k < 3; ++k) c[k] = 0.5 * box.lo[k] + 0.5 * box.hi[k];
+                input.centroids[t] = {c[0], c[1], c[2]};
+                bounds.grow(c);
+            }
+            return bounds;
+        },
+        [](Aabb a, const Aabb& b) { a.grow(b); return a; });  // min/max: order-independent
+    return input;
+}
+
+}  // namespace detail
+
+namespace {
+
+// Copies the raw tree into preorder (left child next, right child in `index`), iteratively.
+std::vector<Node> to_preorder(const detail::RawTree& raw) {
+    const auto used = raw.used.load();
+    std::vector<Node> nodes;
+    nodes.reserve(used);
+    struct Item {
+        std::uint32_t raw;
+        std::uint32_t parent;  // preorder index of the parent whose right child this is, or ~0
+    };
+    std::vector<Item> stack{{0, ~0u}};
+    while (!stack.empty()) {
+        const Item item = stack.back();
+        stack.pop_back();
+        const auto index = static_cast<std::uint32_t>(nodes.size());
+        if (item.parent != ~0u) nodes[item.parent].index = index;
+        const detail::RawNode& node = raw.nodes[item.raw];
+        Node out;
+        out.count = node.count;
+        out.index = node.count != 0 ? node.first : 0;
+        nodes.push_back(out);
+        if (node.count == 0) {
+            stack.push_back({node.first + 1, index});  // right: visited after the left subtree
+            stack.push_back({node.first, ~0u});
+        }
+    }
+    return nodes;
+}
+
+// Cuts the tree into subtrees of at most `grain` nodes (refit in parallel) below a top part.
+void plan_range(const Tree& tree, NodeRange range, std::uint32_t grain, RefitPlan& plan) {
+    const Node& node = tree.nodes[range.root];
+    if (node.is_leaf() || range.end - range.root <= grain) {
+        plan.subtrees.push_back(range);
+        return;
+    }
+    plan.top.push_back(range.root);
+    plan_range(tree, {range.root + 1, node.index}, grain, plan);
+    plan_range(tree, {node.index, range.end}, grain, plan);
+}
+
+std::uint32_t depth_below(const Tree& tree, std::uint32_t node) {
+    const Node& n = tree.nodes[node];
+    if (n.is_leaf()) return 1;
+    return 1 + std::max(depth_below(tree, node + 1), depth_below(tree, n.index));
+}
+
+}  // namespace
+
+std::uint32_t tree_depth(const Tree& tree) { return tree.empty() ? 0 : depth_below(tree, 0); }
+
+BuildStats build_tree(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
+                      const BuildConfig& config, Tree& tree) {
+    const Stopwatch stopwatch;
+    tree = Tree{};
+    BuildStats stats;
+    if (triangles.empty()) return stats;
+    const auto n = static_cast<std::uint32_t>(triangles.size());
+    const detail::BuildInput input = detail::make_build_input(triangles, vertices);
+    detail::RawTree raw;
+    raw.nodes.resize(2 * std::size_t{n} - 1);
+    raw.ids.resize(n);
+    std::iota(raw.ids.begin(), raw.ids.end(), 0u);
+    if (config.builder == Builder::Sah) {
+        detail::build_sah(input, config, raw);
+    } else {
+        detail::build_lbvh(input, config, raw);
+    }
+    tree.nodes = to_preorder(raw);
+    tree.triangle_ids = std::move(raw.ids);
+    plan_range(tree, {0, static_cast<std::uint32_t>(tree.nodes.size())}, std::max(config.refit_grain, 1u),
+               tree.refit_plan);
+    const RefitStats fitted = refit(tree, triangles, vertices);
+    tree.built_cost = fitted.sah_cost;
+    stats.nodes = static_cast<std::uint32_t>(tree.nodes.size());
+    stats.leaves = (stats.nodes + 1) / 2;
+    stats.depth = tree_depth(tree);
+    stats.sah_cost = fitted.sah_cost;
+    stats.ms = stopwatch.elapsed_ms();
+    return stats;
+}
+
+}  // namespace collidescope::bvh

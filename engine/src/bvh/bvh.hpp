@@ -1,0 +1,163 @@
+#pragma once
+// Per-object AABB hierarchies over triangles (engine/src/bvh; Mode 1, thesis 3.1 and 4.4.1).
+//
+// Owns the tree types, the two builders (binned SAH, LBVH), refit, the SAH quality measure
+// and the validator's contract. Knows nothing of frames' object pairs, the narrow phase or
+// threads beyond TBB inside a call: aabb_method.cpp puts the pieces together.
+//
+// Exactness: every box is closed and built from the input coordinates by min/max only, so a
+// node box contains its triangles exactly and a box comparison on doubles is exact.
+
+#include "collidescope/types.hpp"
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+namespace collidescope::bvh {
+
+/// A closed axis-aligned box. The empty box has lo = +inf, hi = -inf.
+struct Aabb {
+    std::array<double, 3> lo{std::numeric_limits<double>::infinity(),
+                             std::numeric_limits<double>::infinity(),
+                             std::numeric_limits<double>::infinity()};
+    std::array<double, 3> hi{-std::numeric_limits<double>::infinity(),
+                             -std::numeric_limits<double>::infinity(),
+                             -std::numeric_limits<double>::infinity()};
+
+    void grow(const Vec3& p) {
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = p[k] < lo[k] ? p[k] : lo[k];
+            hi[k] = p[k] > hi[k] ? p[k] : hi[k];
+        }
+    }
+    void grow(const Aabb& b) {
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = b.lo[k] < lo[k] ? b.lo[k] : lo[k];
+            hi[k] = b.hi[k] > hi[k] ? b.hi[k] : hi[k];
+        }
+    }
+    /// Half the surface area (the SAH's measure); 0 for an empty or flat-to-a-line box.
+    double half_area() const {
+        const double dx = hi[0] - lo[0], dy = hi[1] - lo[1], dz = hi[2] - lo[2];
+        if (!(dx >= 0 && dy >= 0 && dz >= 0)) return 0;
+        return dx * dy + dy * dz + dz * dx;
+    }
+    friend bool operator==(const Aabb&, const Aabb&) = default;
+};
+
+/// True when the closed boxes share a point (touching counts).
+inline bool overlaps(const Aabb& a, const Aabb& b) {
+    return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] &&  //
+           a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&  //
+           a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2];
+}
+
+/// True when `inner` lies within the closed box `outer`.
+inline bool contains(const Aabb& outer, const Aabb& inner) {
+    for (int k = 0; k < 3; ++k) {
+        if (!(outer.lo[k] <= inner.lo[k] && inner.hi[k] <= outer.hi[k])) return false;
+    }
+    return true;
+}
+
+/// The box of triangle `tri` of a mesh (min/max of its corners, exact).
+inline Aabb triangle_box(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
+                         std::uint32_t tri) {
+    Aabb box;
+    for (const std::uint32_t v : triangles[tri]) box.grow(vertices[v]);
+    return box;
+}
+
+/// One node, 56 bytes. Nodes are stored in depth-first preorder: an inner node's left child
+/// is the next node, so a subtree occupies a contiguous index range.
+struct Node {
+    Aabb box;
+    /// Inner node: index of the right child. Leaf: first slot in Tree::triangle_ids.
+    std::uint32_t index = 0;
+    /// Leaf: number of triangles (>= 1). Inner node: 0.
+    std::uint32_t count = 0;
+
+    bool is_leaf() const { return count != 0; }
+};
+
+/// A contiguous subtree [root, end) of the preorder node array.
+struct NodeRange {
+    std::uint32_t root = 0;
+    std::uint32_t end = 0;
+};
+
+/// How refit splits a tree for threads: the subtrees refit in parallel, then the top nodes
+/// above them (in preorder; refit walks them backwards).
+struct RefitPlan {
+    std::vector<NodeRange> subtrees;
+    std::vector<std::uint32_t> top;
+};
+
+/// The hierarchy of one object. Empty (no nodes) for an object without triangles.
+struct Tree {
+    std::vector<Node> nodes;                 ///< preorder; nodes[0] is the root
+    std::vector<std::uint32_t> triangle_ids;  ///< triangle indices in leaf order
+    RefitPlan refit_plan;
+    double built_cost = 0;  ///< sah_cost right after the last build (quality reference)
+
+    bool empty() const { return nodes.empty(); }
+};
+
+/// Which builder builds a tree.
+enum class Builder : std::uint8_t {
+    Sah,   ///< top-down, binned surface area heuristic
+    Lbvh,  ///< Morton codes sorted, split at the highest differing bit (Karras-style linear BVH)
+};
+
+/// Options of a build.
+struct BuildConfig {
+    /// LBVH is the default: as the rebuild of a deforming mesh it wins (bench_bvh_build:
+    /// several times faster to build; the SAH tree's traversal gain does not pay for it).
+    Builder builder = Builder::Lbvh;
+    std::uint32_t max_leaf_size = 4;   ///< leaves hold 1 .. max_leaf_size triangles
+    std::uint32_t sah_bins = 16;       ///< bins per axis for the SAH builder
+    std::uint32_t parallel_grain = 4096;  ///< ranges below this many triangles build serially
+    std::uint32_t refit_grain = 2048;  ///< nodes per parallel refit subtree (RefitPlan)
+};
+
+/// What a build did.
+struct BuildStats {
+    double ms = 0;               ///< wall time of the whole build (incl. its final refit)
+    std::uint32_t nodes = 0;
+    std::uint32_t leaves = 0;
+    std::uint32_t depth = 0;     ///< levels (a lone leaf: 1)
+    double sah_cost = 0;         ///< sah_cost of the new tree
+};
+
+/// Builds `tree` from scratch over every triangle of the mesh, in parallel (TBB). The spans
+/// are read during the call only. Deterministic: the same input gives the same tree for any
+/// thread count.
+BuildStats build_tree(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
+                      const BuildConfig& config, Tree& tree);
+
+/// What a refit did.
+struct RefitStats {
+    double ms = 0;
+    std::uint32_t nodes = 0;
+    double sah_cost = 0;  ///< of the refit tree
+    /// sah_cost / built_cost: 1 right after a build, growing as the tree degrades.
+    double quality = 1;
+};
+
+/// Recomputes every node box bottom-up from `vertices` (same topology as at the build):
+/// leaves from their triangles, inner nodes as the union of their children; the subtrees of
+/// the refit plan in parallel, then the top. Deterministic.
+RefitStats refit(Tree& tree, std::span<const TriIndices> triangles, std::span<const Vec3> vertices);
+
+/// The SAH cost of a tree: (sum over inner nodes of half_area + sum over leaves of
+/// half_area * count) / half_area(root); traversal and triangle costs both 1. A root of zero
+/// area (all triangles on one line or point) gives the node count, so it stays comparable.
+double sah_cost(const Tree& tree);
+
+/// Levels of the tree (0 for an empty tree).
+std::uint32_t tree_depth(const Tree& tree);
+
+}  // namespace collidescope::bvh

@@ -1,0 +1,148 @@
+// The per-object tree stages of one frame: swap, build, refit, policy.
+
+#include "bvh/object_trees.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+
+namespace collidescope::bvh {
+namespace {
+
+bool same_topology(const ObjectTree& tree, const ObjectFrame& mesh) {
+    return tree.topology && tree.topology->revision == mesh.topology->revision;
+}
+
+std::uint8_t bit(RebuildReason reason) { return static_cast<std::uint8_t>(reason); }
+
+}  // namespace
+
+ObjectTrees::ObjectTrees(const AabbConfig& config)
+    : m_config(config), m_policy(config.policy), m_background(config.build) {}
+
+void ObjectTrees::begin_frame(std::size_t objects) {
+    if (m_trees.size() < objects) m_trees.resize(objects);
+    for (ObjectTree& tree : m_trees) tree.fitted = tree.fresh = false;
+}
+
+void ObjectTrees::notify(TreeEventKind kind, std::uint32_t object, const ObjectFrame& mesh) const {
+    if (!m_config.on_tree) return;
+    m_config.on_tree(TreeEvent{kind, object, m_trees[object].tree, mesh.topology->triangles, mesh.vertices});
+}
+
+void ObjectTrees::swap_finished(const Frame& frame, bool wait, AabbFrameInfo& info) {
+    std::optional<std::vector<RebuiltTree>> finished = m_background.take(wait);
+    if (!finished) return;
+    for (RebuiltTree& rebuilt : *finished) {
+        ObjectTree& slot = m_trees[rebuilt.job.object];
+        slot.pending = false;
+        // A topology change since the snapshot makes the new tree useless; the change itself
+        // forces a build on the engine thread (build_missing).
+        if (rebuilt.job.object >= frame.objects.size() ||
+            rebuilt.job.topology->revision != frame.objects[rebuilt.job.object].topology->revision) {
+            continue;
+        }
+        slot.tree = std::move(rebuilt.tree);
+        slot.topology = rebuilt.job.topology;
+        slot.build_ms = rebuilt.stats.ms;
+        slot.quality = 1;
+        ++info.background_swaps;
+        if (m_config.on_tree) {
+            m_config.on_tree(TreeEvent{TreeEventKind::Swap, rebuilt.job.object, slot.tree,
+                                       rebuilt.job.topology->triangles, rebuilt.job.vertices});
+        }
+    }
+}
+
+void ObjectTrees::build(const Frame& frame, std::span<const std::uint32_t> objects) {
+    // Objects in parallel, each build parallel inside (TBB nests them).
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, objects.size(), 1),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t k = range.begin(); k != range.end(); ++k) {
+            const ObjectFrame& mesh = frame.objects[objects[k]];
+            ObjectTree& slot = m_trees[objects[k]];
+            const BuildStats stats = build_tree(mesh.topology->triangles, mesh.vertices, m_config.build, slot.tree);
+            slot.topology = mesh.topology;
+            slot.build_ms = stats.ms;
+            slot.quality = 1;
+            slot.fitted = slot.fresh = true;
+        }
+    });
+    for (const std::uint32_t object : objects) notify(TreeEventKind::Build, object, frame.objects[object]);
+}
+
+void ObjectTrees::build_missing(const Frame& frame, std::span<const std::uint32_t> used, AabbFrameInfo& info) {
+    std::vector<std::uint32_t> missing;
+    for (const std::uint32_t object : used) {
+        const ObjectTree& slot = m_trees[object];
+        const RebuildReason reason = m_policy.decide({slot.topology != nullptr,
+                                                      !same_topology(slot, frame.objects[object])});
+        if (reason == RebuildReason::Initial || reason == RebuildReason::Topology) {
+            info.rebuild_reasons |= bit(reason);
+            missing.push_back(object);
+        }
+    }
+    build(frame, missing);
+    info.rebuilt_objects += static_cast<std::uint32_t>(missing.size());
+}
+
+void ObjectTrees::refit_rest(const Frame& frame, std::span<const std::uint32_t> used) {
+    std::vector<std::uint32_t> stale;
+    for (const std::uint32_t object : used) {
+        if (!m_trees[object].fitted) stale.push_back(object);
+    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, stale.size(), 1),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t k = range.begin(); k != range.end(); ++k) {
+            const ObjectFrame& mesh = frame.objects[stale[k]];
+            ObjectTree& slot = m_trees[stale[k]];
+            slot.quality = refit(slot.tree, mesh.topology->triangles, mesh.vertices).quality;
+            slot.fitted = true;
+        }
+    });
+    for (const std::uint32_t object : stale) notify(TreeEventKind::Refit, object, frame.objects[object]);
+}
+
+void ObjectTrees::apply_policy(const Frame& frame, std::span<const std::uint32_t> used, double detection_ms,
+                               AabbFrameInfo& info) {
+    double rebuild_ms = 0;  // the thesis's "rebuild": every hierarchy in use
+    for (const std::uint32_t object : used) rebuild_ms += m_trees[object].build_ms;
+    std::vector<std::uint32_t> chosen;
+    RebuildReason reason = RebuildReason::None;
+    for (const std::uint32_t object : used) {
+        const ObjectTree& slot = m_trees[object];
+        if (slot.pending || slot.fresh || slot.tree.empty()) continue;
+        const RebuildReason decided = m_policy.decide({true, false, slot.quality, detection_ms, rebuild_ms});
+        if (decided == RebuildReason::None) continue;
+        reason = decided;
+        chosen.push_back(object);
+    }
+    if (chosen.empty()) return;
+    if (m_config.background == BackgroundMode::Off) {
+        build(frame, chosen);
+        info.rebuilt_objects += static_cast<std::uint32_t>(chosen.size());
+    } else {
+        if (m_background.busy()) return;  // one batch at a time; asked again next frame
+        std::vector<RebuildJob> jobs;
+        for (const std::uint32_t object : chosen) {
+            const ObjectFrame& mesh = frame.objects[object];
+            jobs.push_back({object, mesh.topology, mesh.vertices, frame.index, reason});
+            m_trees[object].pending = true;
+        }
+        m_background.start(std::move(jobs));
+        info.background_started += static_cast<std::uint32_t>(chosen.size());
+    }
+    info.rebuild_reasons |= bit(reason);
+}
+
+std::vector<MeshView> ObjectTrees::views(const Frame& frame, std::span<const std::uint32_t> used) const {
+    std::vector<MeshView> views(frame.objects.size());
+    for (const std::uint32_t object : used) {
+        views[object] = {&m_trees[object].tree, frame.objects[object].topology->triangles,
+                         frame.objects[object].vertices};
+    }
+    return views;
+}
+
+}  // namespace collidescope::bvh

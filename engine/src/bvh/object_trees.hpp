@@ -1,0 +1,59 @@
+#pragma once
+// The `aabb` method's per-object trees across frames (engine/src/bvh, private): which tree
+// each object has, for which topology, how good it still is, and the stages that keep them
+// valid for a frame (swap, build, refit, policy). aabb_method.cpp calls the stages in order.
+
+#include "bvh/aabb_method.hpp"
+#include "bvh/background_rebuild.hpp"
+
+#include "collidescope/scene.hpp"
+#include "collidescope/stats.hpp"
+
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace collidescope::bvh {
+
+/// One object's tree and its history.
+struct ObjectTree {
+    Tree tree;
+    std::shared_ptr<const Topology> topology;  ///< the topology the tree was built for; null: none
+    double build_ms = 0;    ///< wall time of its last build
+    double quality = 1;     ///< SAH cost / post-build cost after its last refit or build
+    bool pending = false;   ///< a rebuild of it is in flight on the worker
+    bool fitted = false;    ///< its boxes fit the current frame (built or refit this frame)
+    bool fresh = false;     ///< built this frame (the policy leaves it alone)
+};
+
+/// The trees of every object, kept across frames. Engine thread only.
+class ObjectTrees {
+public:
+    explicit ObjectTrees(const AabbConfig& config);
+
+    /// Marks every tree unfitted for a new frame of `objects` objects.
+    void begin_frame(std::size_t objects);
+    /// Installs finished worker trees whose topology is still current (wait: block for them).
+    void swap_finished(const Frame& frame, bool wait, AabbFrameInfo& info);
+    /// Builds the trees of `used` objects that have none or whose topology changed.
+    void build_missing(const Frame& frame, std::span<const std::uint32_t> used, AabbFrameInfo& info);
+    /// Refits the other `used` trees to the frame; returns the stage's milliseconds.
+    void refit_rest(const Frame& frame, std::span<const std::uint32_t> used);
+    /// Asks the policy about every refit tree; rebuilds now or hands them to the worker.
+    void apply_policy(const Frame& frame, std::span<const std::uint32_t> used, double detection_ms,
+                      AabbFrameInfo& info);
+    /// The views the traversal reads (indexed by object; only `used` objects are set).
+    std::vector<MeshView> views(const Frame& frame, std::span<const std::uint32_t> used) const;
+    const ObjectTree& at(std::uint32_t object) const { return m_trees[object]; }
+
+private:
+    void build(const Frame& frame, std::span<const std::uint32_t> objects);
+    void notify(TreeEventKind kind, std::uint32_t object, const ObjectFrame& mesh) const;
+
+    const AabbConfig& m_config;
+    RebuildPolicy m_policy;
+    std::vector<ObjectTree> m_trees;
+    BackgroundRebuild m_background;
+};
+
+}  // namespace collidescope::bvh

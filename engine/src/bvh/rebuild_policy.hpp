@@ -1,0 +1,66 @@
+#pragma once
+// The rebuild policy (engine/src/bvh): when a refit tree should be built again. A pure
+// function of what the method measured (its timings come from the method's injected clock),
+// so tests script the timings and assert each decision.
+
+#include <cstdint>
+#include <string_view>
+
+namespace collidescope::bvh {
+
+/// Why a tree was (re)built. The values are the bits of AabbFrameInfo::rebuild_reasons
+/// (collidescope/stats.hpp).
+enum class RebuildReason : std::uint8_t {
+    None = 0,
+    Initial = 1,   ///< the object had no tree yet
+    Topology = 2,  ///< its triangles changed (always rebuilds)
+    Thesis = 4,    ///< thesis 5.2.1: detection time above 3/4 of a rebuild's time
+    Quality = 8,   ///< the refit tree's SAH cost degraded past the limit
+};
+
+/// "none", "initial", "topology", "thesis" or "quality".
+std::string_view rebuild_reason_name(RebuildReason reason);
+
+/// Which rule decides rebuilds of trees whose topology did not change.
+enum class RebuildRule : std::uint8_t {
+    Quality,  ///< rebuild when quality (SAH cost / post-build cost) exceeds quality_limit
+    Thesis,   ///< rebuild when the last frame's detection time exceeds thesis_fraction * rebuild time
+    Never,    ///< refit only (topology changes still rebuild)
+};
+
+/// Options of the policy.
+struct RebuildPolicyConfig {
+    RebuildRule rule = RebuildRule::Quality;
+    /// Thesis 5.2.1: "rebuilds after the collision detection time becomes more expensive than
+    /// three fourths of a rebuild".
+    double thesis_fraction = 0.75;
+    /// Quality rule: rebuild when the refit tree's SAH cost exceeds this multiple of its cost
+    /// right after its build.
+    double quality_limit = 1.5;
+};
+
+/// What the policy sees for one object's tree after this frame's refit.
+struct RebuildInputs {
+    bool has_tree = false;          ///< a tree exists for this object
+    bool topology_changed = false;  ///< the frame's triangles differ from the tree's
+    double quality = 1;             ///< refit SAH cost / post-build SAH cost
+    /// The last frame's collision detection time over the hierarchies (traversal + narrow
+    /// phase, ms): what the thesis calls the collision detection time.
+    double detection_ms = 0;
+    /// What rebuilding costs (ms): the last measured build time of the hierarchies in use.
+    double rebuild_ms = 0;
+};
+
+/// Decides, per tree and frame, whether to rebuild and why.
+class RebuildPolicy {
+public:
+    explicit RebuildPolicy(RebuildPolicyConfig config = {}) : m_config(config) {}
+    /// None: keep the refit tree. Initial and Topology take precedence over the rule.
+    RebuildReason decide(const RebuildInputs& inputs) const;
+    const RebuildPolicyConfig& config() const { return m_config; }
+
+private:
+    RebuildPolicyConfig m_config;
+};
+
+}  // namespace collidescope::bvh

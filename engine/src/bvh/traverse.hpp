@@ -1,0 +1,68 @@
+#pragma once
+// Traversal (engine/src/bvh): tree-vs-tree for object pairs, self-traversal within one object,
+// producing candidate triangle pairs (closed triangle boxes that overlap) for the exact test.
+// What is done with a candidate is the narrow phase's business, not the traversal's.
+
+#include "bvh/bvh.hpp"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace collidescope::bvh {
+
+/// One object's tree and mesh, as the traversal reads them (spans over the caller's memory).
+struct MeshView {
+    const Tree* tree = nullptr;
+    std::span<const TriIndices> triangles;
+    std::span<const Vec3> vertices;
+};
+
+/// A unit of traversal work. obj_a < obj_b: node_a of A against node_b of B. obj_a == obj_b
+/// and node_a == node_b: self-traversal below that node. obj_a == obj_b, node_a != node_b:
+/// two disjoint subtrees of one object (the self rule's pairs i != j).
+struct WorkItem {
+    std::uint32_t obj_a = 0;
+    std::uint32_t obj_b = 0;
+    std::uint32_t node_a = 0;
+    std::uint32_t node_b = 0;
+};
+
+/// What a traversal did. Counts do not depend on the thread count.
+struct TraversalStats {
+    double ms = 0;
+    std::uint64_t nodes_visited = 0;    ///< node pairs tested plus self nodes entered
+    std::uint64_t box_tests = 0;        ///< node-pair and triangle-pair box tests
+    std::uint64_t candidate_pairs = 0;  ///< triangle pairs whose boxes overlap
+
+    void add(const TraversalStats& other) {
+        nodes_visited += other.nodes_visited;
+        box_tests += other.box_tests;
+        candidate_pairs += other.candidate_pairs;
+    }
+};
+
+/// Options of the parallel traversal.
+struct TraversalConfig {
+    /// Work items are expanded breadth-first until at least this many exist, then run in
+    /// parallel. A fixed number (not the thread count), so counts are thread-independent.
+    std::uint32_t parallel_items = 256;
+};
+
+/// Processes one node-pair item: the box test, then leaf triangle pairs into `candidates` or
+/// follow-up items onto `stack` (the larger node is split). traverse_pair.cpp.
+void step_pair(const WorkItem& item, std::span<const MeshView> meshes, std::vector<WorkItem>& stack,
+               std::vector<TrianglePair>& candidates, TraversalStats& stats);
+
+/// Processes one self item (obj_a == obj_b, node_a == node_b): a leaf's own pairs i < j, or
+/// the children's self items and their pair item. traverse_self.cpp.
+void step_self(const WorkItem& item, std::span<const MeshView> meshes, std::vector<WorkItem>& stack,
+               std::vector<TrianglePair>& candidates, TraversalStats& stats);
+
+/// Runs `roots` to completion (in parallel, TBB) and appends every candidate pair, canonical,
+/// in an unspecified order. `meshes` is indexed by object; items name only objects whose
+/// tree is non-empty and fitted to the view's vertices.
+TraversalStats traverse(std::vector<WorkItem> roots, std::span<const MeshView> meshes,
+                        const TraversalConfig& config, std::vector<TrianglePair>& candidates);
+
+}  // namespace collidescope::bvh

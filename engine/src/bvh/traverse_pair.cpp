@@ -1,0 +1,58 @@
+// Tree-vs-tree traversal step: simultaneous descent, splitting the node with the larger
+// surface (a leaf is never split); leaves meet triangle by triangle on closed boxes.
+
+#include "bvh/traverse.hpp"
+
+namespace collidescope::bvh {
+namespace {
+
+constexpr std::uint32_t k_cached = 8;  // triangle boxes of leaf B kept on the stack
+
+void leaf_pair(const WorkItem& item, const MeshView& a, const Node& leaf_a, const MeshView& b,
+               const Node& leaf_b, std::vector<TrianglePair>& candidates, TraversalStats& stats) {
+    const std::uint32_t* ids_a = a.tree->triangle_ids.data() + leaf_a.index;
+    const std::uint32_t* ids_b = b.tree->triangle_ids.data() + leaf_b.index;
+    std::array<Aabb, k_cached> boxes_b;
+    const bool cached = leaf_b.count <= k_cached;
+    for (std::uint32_t j = 0; cached && j < leaf_b.count; ++j) boxes_b[j] = triangle_box(b.triangles, b.vertices, ids_b[j]);
+    const bool same_object = item.obj_a == item.obj_b;
+    for (std::uint32_t i = 0; i < leaf_a.count; ++i) {
+        const Aabb box_a = triangle_box(a.triangles, a.vertices, ids_a[i]);
+        for (std::uint32_t j = 0; j < leaf_b.count; ++j) {
+            const Aabb box_b = cached ? boxes_b[j] : triangle_box(b.triangles, b.vertices, ids_b[j]);
+            if (!overlaps(box_a, box_b)) continue;
+            candidates.push_back(same_object ? make_pair_ordered(item.obj_a, ids_a[i], item.obj_b, ids_b[j])
+                                             : TrianglePair{item.obj_a, ids_a[i], item.obj_b, ids_b[j]});
+        }
+    }
+    stats.box_tests += std::uint64_t{leaf_a.count} * leaf_b.count;
+}
+
+}  // namespace
+
+void step_pair(const WorkItem& item, std::span<const MeshView> meshes, std::vector<WorkItem>& stack,
+               std::vector<TrianglePair>& candidates, TraversalStats& stats) {
+    const MeshView& a = meshes[item.obj_a];
+    const MeshView& b = meshes[item.obj_b];
+    const Node& x = a.tree->nodes[item.node_a];
+    const Node& y = b.tree->nodes[item.node_b];
+    ++stats.nodes_visited;
+    ++stats.box_tests;
+    if (!overlaps(x.box, y.box)) return;
+    if (x.is_leaf() && y.is_leaf()) {
+        const std::size_t before = candidates.size();
+        leaf_pair(item, a, x, b, y, candidates, stats);
+        stats.candidate_pairs += candidates.size() - before;
+        return;
+    }
+    const bool split_a = !x.is_leaf() && (y.is_leaf() || x.box.half_area() >= y.box.half_area());
+    if (split_a) {
+        stack.push_back({item.obj_a, item.obj_b, item.node_a + 1, item.node_b});
+        stack.push_back({item.obj_a, item.obj_b, x.index, item.node_b});
+    } else {
+        stack.push_back({item.obj_a, item.obj_b, item.node_a, item.node_b + 1});
+        stack.push_back({item.obj_a, item.obj_b, item.node_a, y.index});
+    }
+}
+
+}  // namespace collidescope::bvh

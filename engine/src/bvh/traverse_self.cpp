@@ -1,0 +1,43 @@
+// Self-traversal step (self-collision within one object): a node's pairs are its children's
+// own pairs plus the pairs between the two children. Every box-overlapping pair i < j goes to
+// the narrow phase, adjacent ones included: the exact self rule (self_triangles_collide)
+// decides them, since sharing a vertex does not prove two triangles apart (DESIGN.md).
+
+#include "bvh/traverse.hpp"
+
+namespace collidescope::bvh {
+namespace {
+
+void leaf_self(const WorkItem& item, const MeshView& mesh, const Node& leaf,
+               std::vector<TrianglePair>& candidates, TraversalStats& stats) {
+    const std::uint32_t* ids = mesh.tree->triangle_ids.data() + leaf.index;
+    for (std::uint32_t i = 0; i < leaf.count; ++i) {
+        const Aabb box_i = triangle_box(mesh.triangles, mesh.vertices, ids[i]);
+        for (std::uint32_t j = i + 1; j < leaf.count; ++j) {
+            ++stats.box_tests;
+            if (!overlaps(box_i, triangle_box(mesh.triangles, mesh.vertices, ids[j]))) continue;
+            candidates.push_back(make_pair_ordered(item.obj_a, ids[i], item.obj_a, ids[j]));
+            ++stats.candidate_pairs;
+        }
+    }
+}
+
+}  // namespace
+
+void step_self(const WorkItem& item, std::span<const MeshView> meshes, std::vector<WorkItem>& stack,
+               std::vector<TrianglePair>& candidates, TraversalStats& stats) {
+    const MeshView& mesh = meshes[item.obj_a];
+    const Node& node = mesh.tree->nodes[item.node_a];
+    ++stats.nodes_visited;
+    if (node.is_leaf()) {
+        leaf_self(item, mesh, node, candidates, stats);
+        return;
+    }
+    const std::uint32_t left = item.node_a + 1;
+    const std::uint32_t right = node.index;
+    stack.push_back({item.obj_a, item.obj_a, left, right});
+    stack.push_back({item.obj_a, item.obj_a, right, right});
+    stack.push_back({item.obj_a, item.obj_a, left, left});
+}
+
+}  // namespace collidescope::bvh

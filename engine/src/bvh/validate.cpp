@@ -1,0 +1,152 @@
+// The tree validator: a slow, obvious walk over every node (serial, no shortcuts).
+
+#include "bvh/validate.hpp"
+
+#include <algorithm>
+
+namespace collidescope::bvh {
+namespace {
+
+class Validator {
+public:
+    Validator(const Tree& tree, std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
+              const ValidateOptions& options)
+        : m_tree(tree), m_triangles(triangles), m_vertices(vertices), m_options(options),
+          m_reached(tree.nodes.size(), 0), m_seen(triangles.size(), 0) {}
+
+    std::vector<std::string> run() {
+        if (m_tree.empty()) {
+            if (!m_triangles.empty()) fail("empty tree for " + std::to_string(m_triangles.size()) + " triangles");
+            return m_errors;
+        }
+        if (m_tree.triangle_ids.size() != m_triangles.size()) {
+            fail("triangle_ids has " + std::to_string(m_tree.triangle_ids.size()) + " entries for " +
+                 std::to_string(m_triangles.size()) + " triangles");
+            return m_errors;
+        }
+        visit(0, static_cast<std::uint32_t>(m_tree.nodes.size()));
+        check_totals();
+        check_plan();
+        return m_errors;
+    }
+
+private:
+    void fail(std::string message) {
+        if (m_errors.size() < 20) m_errors.push_back(std::move(message));
+    }
+
+    // Node `index` owns the preorder range [index, end).
+    void visit(std::uint32_t index, std::uint32_t end) {
+        if (index >= end || index >= m_tree.nodes.size()) {
+            fail("node " + std::to_string(index) + " outside its range (end " + std::to_string(end) + ")");
+            return;
+        }
+        ++m_reached[index];
+        const Node& node = m_tree.nodes[index];
+        if (node.is_leaf()) {
+            if (index + 1 != end) fail("leaf " + std::to_string(index) + " does not end its range");
+            visit_leaf(index, node);
+            return;
+        }
+        const std::uint32_t right = node.index;
+        if (!(index + 1 < right && right < end)) {
+            fail("node " + std::to_string(index) + ": right child " + std::to_string(right) + " outside (" +
+                 std::to_string(index + 1) + ", " + std::to_string(end) + ")");
+            return;
+        }
+        check_child(index, index + 1);
+        check_child(index, right);
+        if (m_options.tight) {
+            Aabb expected = m_tree.nodes[index + 1].box;
+            expected.grow(m_tree.nodes[right].box);
+            if (!(expected == node.box)) fail("node " + std::to_string(index) + ": box is not its children's union");
+        }
+        ++m_inner;
+        visit(index + 1, right);
+        visit(right, end);
+    }
+
+    void check_child(std::uint32_t parent, std::uint32_t child) {
+        if (!contains(m_tree.nodes[parent].box, m_tree.nodes[child].box)) {
+            fail("node " + std::to_string(child) + ": box not inside its parent " + std::to_string(parent));
+        }
+    }
+
+    void visit_leaf(std::uint32_t index, const Node& node) {
+        ++m_leaves;
+        if (node.count > m_options.max_leaf_size) {
+            fail("leaf " + std::to_string(index) + " holds " + std::to_string(node.count) + " triangles");
+        }
+        if (node.index != m_next_slot) {
+            fail("leaf " + std::to_string(index) + " starts at slot " + std::to_string(node.index) +
+                 ", expected " + std::to_string(m_next_slot));
+        }
+        m_next_slot = node.index + node.count;
+        if (m_next_slot > m_tree.triangle_ids.size()) {
+            fail("leaf " + std::to_string(index) + " runs past triangle_ids");
+            return;
+        }
+        Aabb fitted;
+        for (std::uint32_t k = node.index; k < m_next_slot; ++k) {
+            const std::uint32_t tri = m_tree.triangle_ids[k];
+            if (tri >= m_triangles.size()) {
+                fail("leaf " + std::to_string(index) + ": triangle " + std::to_string(tri) + " out of range");
+                continue;
+            }
+            ++m_seen[tri];
+            const Aabb box = triangle_box(m_triangles, m_vertices, tri);
+            fitted.grow(box);
+            if (!contains(node.box, box)) {
+                fail("leaf " + std::to_string(index) + ": triangle " + std::to_string(tri) + " sticks out of its box");
+            }
+        }
+        if (m_options.tight && !(fitted == node.box)) fail("leaf " + std::to_string(index) + ": box is not tight");
+    }
+
+    void check_totals() {
+        for (std::size_t i = 0; i < m_reached.size(); ++i) {
+            if (m_reached[i] != 1) fail("node " + std::to_string(i) + " reached " + std::to_string(m_reached[i]) + " times");
+        }
+        for (std::size_t t = 0; t < m_seen.size(); ++t) {
+            if (m_seen[t] != 1) fail("triangle " + std::to_string(t) + " in " + std::to_string(m_seen[t]) + " leaves");
+        }
+        if (m_tree.nodes.size() != 2 * m_leaves - 1 || m_inner + 1 != m_leaves) {
+            fail(std::to_string(m_tree.nodes.size()) + " nodes for " + std::to_string(m_leaves) + " leaves");
+        }
+        if (m_next_slot != m_tree.triangle_ids.size()) fail("leaves do not cover triangle_ids");
+    }
+
+    // The refit plan's subtrees and top nodes together cover every node exactly once.
+    void check_plan() {
+        std::vector<int> covered(m_tree.nodes.size(), 0);
+        for (const NodeRange& range : m_tree.refit_plan.subtrees) {
+            for (std::uint32_t i = range.root; i < range.end && i < covered.size(); ++i) ++covered[i];
+        }
+        for (const std::uint32_t top : m_tree.refit_plan.top) {
+            if (top < covered.size()) ++covered[top];
+        }
+        if (std::any_of(covered.begin(), covered.end(), [](int c) { return c != 1; })) {
+            fail("the refit plan does not cover every node exactly once");
+        }
+    }
+
+    const Tree& m_tree;
+    std::span<const TriIndices> m_triangles;
+    std::span<const Vec3> m_vertices;
+    const ValidateOptions& m_options;
+    std::vector<int> m_reached;
+    std::vector<int> m_seen;
+    std::vector<std::string> m_errors;
+    std::uint32_t m_next_slot = 0;
+    std::size_t m_leaves = 0;
+    std::size_t m_inner = 0;
+};
+
+}  // namespace
+
+std::vector<std::string> validate(const Tree& tree, std::span<const TriIndices> triangles,
+                                  std::span<const Vec3> vertices, const ValidateOptions& options) {
+    return Validator(tree, triangles, vertices, options).run();
+}
+
+}  // namespace collidescope::bvh

@@ -1,0 +1,139 @@
+// The `aabb` method returns exactly the brute-force pairs: every built-in data set at the
+// small preset, randomized scenes (many objects, fractured topology, degenerate triangles,
+// coincident and coplanar sheets), self-collision on and off, 1, 2 and 4 threads, every
+// builder and background mode; the validator passes after every build, refit and swap.
+
+#include "bvh/bvh_helpers.hpp"
+
+#include "support/brute_reference.hpp"
+#include "support/scene_builders.hpp"
+
+#include "collidescope/datasets.hpp"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+namespace collidescope::bvh {
+namespace {
+
+using testing::MethodRun;
+
+// One configuration per thread count, so the grid covers builders and background modes.
+struct Variant {
+    int threads;
+    Builder builder;
+    BackgroundMode background;
+    RebuildRule rule;
+};
+
+constexpr Variant k_variants[] = {
+    {1, Builder::Sah, BackgroundMode::Off, RebuildRule::Quality},
+    {2, Builder::Lbvh, BackgroundMode::NextFrame, RebuildRule::Quality},
+    {4, Builder::Lbvh, BackgroundMode::Async, RebuildRule::Thesis},
+};
+
+std::string describe(const Variant& v) {
+    return "threads " + std::to_string(v.threads) + (v.builder == Builder::Sah ? " sah " : " lbvh ") +
+           "background " + std::to_string(static_cast<int>(v.background)) + " rule " +
+           std::to_string(static_cast<int>(v.rule));
+}
+
+// Runs `frames` through a configured aabb method under a thread limit, validating every tree.
+MethodRun run_aabb(const std::vector<Frame>& frames, bool self_collision, const Variant& variant,
+                   testing::TreeChecker& checker) {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                                    static_cast<std::size_t>(variant.threads));
+    AabbConfig config;
+    config.build.builder = variant.builder;
+    config.build.parallel_grain = 512;
+    config.build.refit_grain = 64;
+    config.background = variant.background;
+    config.policy.rule = variant.rule;
+    config.policy.quality_limit = 1.05;  // rebuild often, so swaps and rebuilds are exercised
+    config.on_tree = checker.hook();
+    const std::unique_ptr<Method> method = make_aabb_method(config);
+    return testing::run_method(*method, frames, self_collision);
+}
+
+// Checks the aabb method against brute on every frame, for every variant and both self modes.
+void expect_exact(const std::vector<Frame>& frames, std::uint64_t* colliding = nullptr) {
+    for (const bool self_collision : {false, true}) {
+        const MethodRun reference = testing::run_pipeline("brute", frames, self_collision, 0);
+        for (const Variant& variant : k_variants) {
+            SCOPED_TRACE(describe(variant) + (self_collision ? " self" : ""));
+            testing::TreeChecker checker;
+            const MethodRun run = run_aabb(frames, self_collision, variant, checker);
+            ASSERT_EQ(run.pairs.size(), frames.size());
+            for (std::size_t f = 0; f < frames.size(); ++f) {
+                ASSERT_EQ(run.pairs[f], reference.pairs[f]) << "frame " << f;
+                EXPECT_EQ(run.stats[f].counts.exact_tests, run.stats[f].counts.candidate_pairs);
+                // Candidates are the box-overlapping triangle pairs, as brute's prefilter finds.
+                EXPECT_EQ(run.stats[f].counts.candidate_pairs, reference.stats[f].counts.candidate_pairs) << "frame " << f;
+                if (colliding != nullptr) *colliding += run.pairs[f].size();
+            }
+            EXPECT_EQ(checker.failures, std::vector<std::string>{});
+            EXPECT_GT(checker.builds + checker.refits, 0u);
+        }
+    }
+}
+
+class BuiltinScenes : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BuiltinScenes, MatchesBruteOnEveryFrame) {
+    const Scene scene = make_builtin_scene(GetParam() + ":small");
+    std::uint64_t colliding = 0;
+    expect_exact(testing::all_frames(scene), &colliding);
+    EXPECT_GT(colliding, 0u) << "the data set should collide somewhere";
+}
+
+INSTANTIATE_TEST_SUITE_P(SmallPreset, BuiltinScenes,
+                         ::testing::Values("A", "B", "C", "D", "E1", "E2", "E3", "E4", "demo"));
+
+TEST(AabbMethod, MatchesBruteOnRandomScenes) {
+    std::uint64_t colliding = 0;
+    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        expect_exact(testing::all_frames(testing::random_scene(seed, {8, 4, 120, 8})), &colliding);
+    }
+    EXPECT_GT(colliding, 100u);
+}
+
+TEST(AabbMethod, MatchesBruteWithFracturedTopology) {
+    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        const std::vector<Frame> frames = testing::all_frames(testing::fractured_scene(seed));
+        // The scene does change topology (or this test would not test rebuilds).
+        ASSERT_NE(frames.front().objects[0].topology->revision, frames.back().objects[0].topology->revision);
+        expect_exact(frames);
+        testing::TreeChecker checker;
+        const MethodRun run = run_aabb(frames, true, k_variants[0], checker);
+        std::uint8_t reasons = 0;
+        for (const FrameStats& stats : run.stats) reasons |= stats.aabb->rebuild_reasons;
+        EXPECT_NE(reasons & k_rebuild_topology, 0);
+    }
+}
+
+TEST(AabbMethod, MatchesBruteOnCoincidentCoplanarAndDegenerate) {
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        std::uint64_t colliding = 0;
+        expect_exact(testing::all_frames(testing::sheets_and_degenerates_scene(seed)), &colliding);
+        EXPECT_GT(colliding, 0u);
+    }
+}
+
+TEST(AabbMethod, ByNameThroughThePipeline) {
+    const std::vector<Frame> frames = testing::all_frames(make_builtin_scene("demo:small"));
+    for (const int threads : {1, 2}) {
+        const MethodRun aabb = testing::run_pipeline("aabb", frames, true, threads);
+        const MethodRun brute = testing::run_pipeline("brute", frames, true, threads);
+        EXPECT_EQ(aabb.pairs, brute.pairs);
+        for (const FrameStats& stats : aabb.stats) {
+            EXPECT_EQ(stats.method, "aabb");
+            ASSERT_TRUE(stats.aabb.has_value());
+        }
+    }
+}
+
+}  // namespace
+}  // namespace collidescope::bvh

@@ -1,0 +1,167 @@
+// Refit against fresh builds and the validator, the quality measure, and the traversal's
+// candidates against the obvious all-pairs box filter.
+
+#include "support/scene_builders.hpp"
+
+#include "bvh/bvh.hpp"
+#include "bvh/traverse.hpp"
+#include "bvh/validate.hpp"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <random>
+
+namespace collidescope::bvh {
+namespace {
+
+// Every vertex moved by a random multiple of `step` per axis (up to `range` steps).
+std::vector<Vec3> jiggle(std::mt19937_64& rng, std::vector<Vec3> vertices, double step, int range) {
+    std::uniform_int_distribution<int> d(-range, range);
+    for (Vec3& v : vertices) v += step * Vec3(d(rng), d(rng), d(rng));
+    return vertices;
+}
+
+TEST(BvhRefit, FitsMovedVerticesExactly) {
+    std::mt19937_64 rng(3);
+    const MeshData mesh = testing::crumpled_sheet(rng, 40, 1.0, true);
+    for (const Builder builder : {Builder::Sah, Builder::Lbvh}) {
+        BuildConfig config;
+        config.builder = builder;
+        config.refit_grain = 32;
+        Tree tree;
+        build_tree(mesh.triangles, mesh.vertices, config, tree);
+        std::vector<Vec3> vertices = mesh.vertices;
+        for (int frame = 0; frame < 5; ++frame) {
+            vertices = jiggle(rng, vertices, 0.125, 2);
+            const RefitStats stats = refit(tree, mesh.triangles, vertices);
+            EXPECT_EQ(validate(tree, mesh.triangles, vertices), std::vector<std::string>{}) << "frame " << frame;
+            EXPECT_EQ(stats.nodes, tree.nodes.size());
+            EXPECT_NEAR(stats.sah_cost, sah_cost(tree), 1e-9 * stats.sah_cost);
+        }
+    }
+}
+
+TEST(BvhRefit, QualityIsOneUnmovedAndGrowsWhenTrianglesScatter) {
+    std::mt19937_64 rng(4);
+    const MeshData mesh = testing::grid_sheet(40, 10.0);
+    Tree tree;
+    build_tree(mesh.triangles, mesh.vertices, BuildConfig{}, tree);
+    EXPECT_DOUBLE_EQ(refit(tree, mesh.triangles, mesh.vertices).quality, 1.0);
+    // A uniform scale keeps the structure's quality (the cost is relative to the root).
+    std::vector<Vec3> scaled = mesh.vertices;
+    for (Vec3& v : scaled) v *= 4.0;
+    EXPECT_NEAR(refit(tree, mesh.triangles, scaled).quality, 1.0, 1e-12);
+    // Scattering the vertices (an explosion) stretches the boxes: the quality degrades.
+    const double scattered = refit(tree, mesh.triangles, jiggle(rng, mesh.vertices, 1.0, 10)).quality;
+    EXPECT_GT(scattered, 2.0);
+}
+
+TEST(BvhRefit, SameBoxesForEveryThreadCount) {
+    std::mt19937_64 rng(8);
+    const MeshData mesh = testing::grid_soup(rng, 20000, 60);
+    const std::vector<Vec3> moved = jiggle(rng, mesh.vertices, 0.5, 3);
+    std::vector<std::vector<Node>> results;
+    for (const int threads : {1, 2, 4}) {
+        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+        BuildConfig config;
+        config.refit_grain = 128;
+        Tree tree;
+        build_tree(mesh.triangles, mesh.vertices, config, tree);
+        refit(tree, mesh.triangles, moved);
+        results.push_back(tree.nodes);
+    }
+    for (std::size_t k = 1; k < results.size(); ++k) {
+        ASSERT_EQ(results[k].size(), results[0].size());
+        for (std::size_t i = 0; i < results[0].size(); ++i) ASSERT_EQ(results[k][i].box, results[0][i].box);
+    }
+}
+
+// All triangle pairs whose closed boxes overlap: between two meshes, or i < j within one.
+std::vector<TrianglePair> box_pairs(const MeshData& a, const MeshData* b) {
+    std::vector<TrianglePair> pairs;
+    const MeshData& other = b != nullptr ? *b : a;
+    for (std::uint32_t i = 0; i < a.triangles.size(); ++i) {
+        const Aabb box_i = triangle_box(a.triangles, a.vertices, i);
+        for (std::uint32_t j = b != nullptr ? 0 : i + 1; j < other.triangles.size(); ++j) {
+            if (overlaps(box_i, triangle_box(other.triangles, other.vertices, j))) {
+                pairs.push_back({0, i, b != nullptr ? 1u : 0u, j});
+            }
+        }
+    }
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
+
+TEST(BvhTraverse, CandidatesAreExactlyTheOverlappingTriangleBoxes) {
+    std::mt19937_64 rng(21);
+    for (int round = 0; round < 6; ++round) {
+        SCOPED_TRACE("round " + std::to_string(round));
+        const MeshData a = round % 2 == 0 ? testing::grid_soup(rng, 600, 8) : testing::crumpled_sheet(rng, 16, 1.0, true);
+        const MeshData b = testing::translated(testing::grid_soup(rng, 500, 8), Vec3(2, 1, 0));
+        for (const Builder builder : {Builder::Sah, Builder::Lbvh}) {
+            BuildConfig config;
+            config.builder = builder;
+            config.max_leaf_size = 1 + static_cast<std::uint32_t>(round);
+            Tree tree_a;
+            Tree tree_b;
+            build_tree(a.triangles, a.vertices, config, tree_a);
+            build_tree(b.triangles, b.vertices, config, tree_b);
+            const std::vector<MeshView> views{{&tree_a, a.triangles, a.vertices}, {&tree_b, b.triangles, b.vertices}};
+            for (const std::uint32_t items : {1u, 256u}) {
+                std::vector<TrianglePair> pair_candidates;
+                std::vector<TrianglePair> self_candidates;
+                const TraversalStats pair_stats = traverse({{0, 1, 0, 0}}, views, {items}, pair_candidates);
+                const TraversalStats self_stats = traverse({{0, 0, 0, 0}}, views, {items}, self_candidates);
+                std::sort(pair_candidates.begin(), pair_candidates.end());
+                std::sort(self_candidates.begin(), self_candidates.end());
+                EXPECT_EQ(pair_candidates, box_pairs(a, &b));
+                EXPECT_EQ(self_candidates, box_pairs(a, nullptr));
+                EXPECT_EQ(pair_stats.candidate_pairs, pair_candidates.size());
+                EXPECT_EQ(self_stats.candidate_pairs, self_candidates.size());
+                EXPECT_GT(pair_stats.nodes_visited, 0u);
+            }
+        }
+    }
+}
+
+TEST(BvhTraverse, PrunesSeparatedParts) {
+    // Two 30x30 sheets crossing along one strip: a small share of the pairs is near.
+    const MeshData a = testing::grid_sheet(30, 30.0);
+    MeshData b = testing::grid_sheet(30, 30.0);
+    for (Vec3& v : b.vertices) v = Vec3(v.x() + 29.0, v.y(), v.y() - 15.0);  // tilted, overlapping x in [29, 30]
+    Tree tree_a;
+    Tree tree_b;
+    build_tree(a.triangles, a.vertices, BuildConfig{}, tree_a);
+    build_tree(b.triangles, b.vertices, BuildConfig{}, tree_b);
+    const std::vector<MeshView> views{{&tree_a, a.triangles, a.vertices}, {&tree_b, b.triangles, b.vertices}};
+    std::vector<TrianglePair> candidates;
+    const TraversalStats stats = traverse({{0, 1, 0, 0}}, views, {}, candidates);
+    std::sort(candidates.begin(), candidates.end());
+    EXPECT_EQ(candidates, box_pairs(a, &b));
+    EXPECT_FALSE(candidates.empty());
+    EXPECT_LT(stats.box_tests * 100, std::uint64_t{a.triangles.size()} * b.triangles.size());
+}
+
+TEST(BvhTraverse, CountsDoNotDependOnThreads) {
+    std::mt19937_64 rng(22);
+    const MeshData a = testing::crumpled_sheet(rng, 40, 1.0, true);
+    Tree tree;
+    build_tree(a.triangles, a.vertices, BuildConfig{}, tree);
+    const std::vector<MeshView> views{{&tree, a.triangles, a.vertices}};
+    std::vector<TraversalStats> stats;
+    for (const int threads : {1, 2, 4}) {
+        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+        std::vector<TrianglePair> candidates;
+        stats.push_back(traverse({{0, 0, 0, 0}}, views, {}, candidates));
+    }
+    for (const TraversalStats& s : stats) {
+        EXPECT_EQ(s.nodes_visited, stats[0].nodes_visited);
+        EXPECT_EQ(s.box_tests, stats[0].box_tests);
+        EXPECT_EQ(s.candidate_pairs, stats[0].candidate_pairs);
+    }
+}
+
+}  // namespace
+}  // namespace collidescope::bvh
