@@ -6,6 +6,7 @@
 #include "bench_run.hpp"
 #include "commands.hpp"
 #include "frame_range.hpp"
+#include "gpu_options.hpp"
 #include "progress.hpp"
 #include "scene_input.hpp"
 
@@ -30,6 +31,7 @@ struct BenchOptions {
     int threads = 0;
     std::string frames;                ///< "" = every frame of every scene
     std::string output;
+    GpuOptions gpu;
 };
 
 std::string with_preset(const std::string& scene, const std::string& preset) {
@@ -83,7 +85,7 @@ int run_bench(const BenchOptions& options) {
         Scene scene = make_builtin_scene(with_preset(name, options.preset));
         const FrameRange range = parse_frame_range(options.frames, scene.source->frame_count());
         plans.push_back({methods_for(options, scene), range.begin, range.end, options.repeat,
-                         options.threads, scene.self_collision});
+                         options.threads, scene.self_collision, gpu_config(options.gpu)});
         steps += std::uint64_t{range.end - range.begin} * static_cast<std::uint64_t>(options.repeat);
         scenes.push_back(std::move(scene));
     }
@@ -156,6 +158,7 @@ Command add_bench_command(CLI::App& app) {
     command->add_option("-o,--output", options->output, "Output folder (created when missing)")
         ->type_name("DIR")
         ->required();
+    add_gpu_options(*command, options->gpu);
     return {command, [options] { return run_bench(*options); }};
 }
 

@@ -66,8 +66,12 @@ BenchScene run_bench_scene(const Scene& scene, const BenchPlan& plan,
         // Fresh pipelines each repeat: methods keep state (trees, GPU state) across frames.
         std::vector<std::unique_ptr<Pipeline>> pipelines;
         for (const std::string& method : plan.methods) {
-            pipelines.push_back(std::make_unique<Pipeline>(
-                PipelineConfig{method, plan.self_collision, plan.threads}));
+            PipelineConfig config;
+            config.method = method;
+            config.self_collision = plan.self_collision;
+            config.threads = plan.threads;
+            config.gpu = plan.gpu;
+            pipelines.push_back(std::make_unique<Pipeline>(config));
         }
         for (std::uint32_t f = 0; f < frames; ++f) {
             const Frame frame = scene.source->frame(plan.begin + f);

@@ -3,6 +3,7 @@
 // animation run `repeat` times with fresh pipelines, and every frame's pairs checked to be the
 // same for all methods.
 
+#include "collidescope/gpu_cull.hpp"
 #include "collidescope/scene.hpp"
 #include "collidescope/types.hpp"
 
@@ -21,6 +22,7 @@ struct BenchPlan {
     int repeat = 1;                    ///< runs of the whole animation per method (>= 1)
     int threads = 0;                   ///< worker threads, 0 = all hardware threads
     bool self_collision = false;
+    GpuCullConfig gpu;                 ///< options of the GPU cull methods
 };
 
 /// One method on one frame: per-stage milliseconds (median over the repeats, in

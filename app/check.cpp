@@ -4,6 +4,7 @@
 #include "check_sinks.hpp"
 #include "commands.hpp"
 #include "frame_range.hpp"
+#include "gpu_options.hpp"
 #include "output_stream.hpp"
 #include "progress.hpp"
 #include "scene_input.hpp"
@@ -30,6 +31,7 @@ struct CheckOptions {
     std::string stats;            ///< JSON Lines output ("" = none, "-" = stdout)
     bool exit_zero = false;
     bool quiet = false;
+    GpuOptions gpu;
 };
 
 constexpr const char* k_footer = R"(Frames (--frames) are numbered from 0 in scene order and the range is half-open:
@@ -58,9 +60,11 @@ int run_check(const CheckOptions& options) {
     }
     const Scene scene = open_scene(options.inputs, options.scene);
     const FrameRange range = parse_frame_range(options.frames, scene.source->frame_count());
-    const PipelineConfig config{options.method,
-                                resolve_self_collision(options.self, options.no_self, scene),
-                                options.threads};
+    PipelineConfig config;
+    config.method = options.method;
+    config.self_collision = resolve_self_collision(options.self, options.no_self, scene);
+    config.threads = options.threads;
+    config.gpu = gpu_config(options.gpu);
     Pipeline pipeline(config);
 
     Progress progress(range.end - range.begin);
@@ -123,6 +127,7 @@ Command add_check_command(CLI::App& app) {
         ->type_name("FILE");
     check->add_flag("--exit-zero", options->exit_zero, "Exit 0 even when collisions are found");
     check->add_flag("-q,--quiet", options->quiet, "Only the total line on stderr, no per-frame lines");
+    add_gpu_options(*check, options->gpu);
     return {check, [options] { return run_check(*options); }};
 }
 

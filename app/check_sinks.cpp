@@ -39,6 +39,36 @@ void PairsWriter::on_frame(const FrameReport& report) {
     m_out.write(lines.data(), static_cast<std::streamsize>(lines.size()));
 }
 
+namespace {
+
+// The GPU cull's trace of one frame: PCS sizes, per view and per pass.
+nlohmann::ordered_json gpu_json(const GpuFrameInfo& info) {
+    nlohmann::ordered_json gpu;
+    gpu["renderer"] = info.renderer;
+    gpu["pcs_objects"] = {info.pcs_objects_in, info.pcs_objects_out};
+    gpu["pcs_triangles"] = {info.pcs_triangles_in, info.pcs_triangles_out};
+    gpu["queries"] = info.queries;
+    nlohmann::ordered_json views = nlohmann::ordered_json::array();
+    for (const GpuViewInfo& view : info.views) {
+        views.push_back({{"level", view.level == 0 ? "objects" : "triangles"}, {"view", std::string(1, "xyz"[view.view])},
+                         {"pcs_in", view.pcs_in}, {"pcs_out", view.pcs_out}});
+    }
+    nlohmann::ordered_json passes = nlohmann::ordered_json::array();
+    for (const GpuPassInfo& pass : info.passes) {
+        passes.push_back({{"level", pass.level == 0 ? "objects" : "triangles"},
+                          {"view", std::string(1, "xyz"[pass.view])},
+                          {"pass", pass.reverse != 0 ? "reverse" : "forward"},
+                          {"tested", pass.items_tested}, {"hidden", pass.items_hidden},
+                          {"queries", pass.queries}, {"samples_passed", pass.samples_passed},
+                          {"triangles_per_query", pass.triangles_per_query}});
+    }
+    gpu["views"] = std::move(views);
+    gpu["passes"] = std::move(passes);
+    return gpu;
+}
+
+}  // namespace
+
 void StatsWriter::on_frame(const FrameReport& report) {
     nlohmann::ordered_json line;
     line["frame"] = report.stats.frame;
@@ -49,6 +79,7 @@ void StatsWriter::on_frame(const FrameReport& report) {
     for_each_count(report.stats.counts, [&](const char* name, std::uint64_t value) { counts[name] = value; });
     line["ms"] = std::move(ms);
     line["counts"] = std::move(counts);
+    if (report.stats.gpu) line["gpu"] = gpu_json(*report.stats.gpu);
     m_out << line.dump() << '\n';
 }
 

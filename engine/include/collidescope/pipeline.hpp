@@ -2,6 +2,7 @@
 /// The per-frame pipeline (engine/src/pipeline): update, object level, the method's culling
 /// and narrow phase, then the report to the trace sinks.
 
+#include "collidescope/gpu_cull.hpp"
 #include "collidescope/scene.hpp"
 #include "collidescope/stats.hpp"
 #include "collidescope/trace.hpp"
@@ -26,6 +27,7 @@ struct PipelineConfig {
     /// tbb::global_control held while the pipeline lives, so it is process-wide: with several
     /// pipelines alive at once, the smallest limit wins.
     int threads = 0;
+    GpuCullConfig gpu;  ///< options of the GPU cull (methods gpu, ...)
 };
 
 /// One object pair whose boxes overlap (a == b for self-collision).
@@ -64,9 +66,10 @@ public:
 /// The names `--method` accepts, in a stable order.
 std::vector<std::string> method_names();
 
-/// Makes a method by name. Throws std::invalid_argument, listing the known names, on an
-/// unknown name.
-std::unique_ptr<Method> make_method(std::string_view name);
+/// Makes a method by name, with the options `config` holds for it. Throws
+/// std::invalid_argument, listing the known names, on an unknown name, and UnavailableError
+/// (with the reason) when the method needs a capability the machine lacks (a GL context).
+std::unique_ptr<Method> make_method(std::string_view name, const PipelineConfig& config = {});
 
 /// The result of one frame.
 struct FrameResult {

@@ -5,6 +5,8 @@
 /// recorder stores exactly these structs, the decision system reads them, and `check --stats`
 /// prints them; nothing is measured twice.
 
+#include "collidescope/gpu_cull.hpp"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -111,6 +113,7 @@ struct FrameStats {
     StageTimes ms;
     FrameCounts counts;
     std::optional<AabbFrameInfo> aabb;  ///< set by the `aabb` method only
+    std::optional<GpuFrameInfo> gpu;    ///< set by the GPU cull methods only
 };
 
 }  // namespace collidescope

@@ -2,6 +2,7 @@
 
 #include "brute/brute_method.hpp"
 #include "bvh/aabb_method.hpp"
+#include "gpucull/gpu_method.hpp"
 
 #include "collidescope/pipeline.hpp"
 
@@ -12,13 +13,14 @@ namespace {
 
 struct MethodEntry {
     std::string_view name;
-    std::unique_ptr<Method> (*make)();
+    std::unique_ptr<Method> (*make)(const PipelineConfig& config);
 };
 
 // In the order method_names() lists them.
 constexpr MethodEntry k_methods[] = {
-    {"brute", &make_brute_method},
-    {"aabb", &make_aabb_method},
+    {"brute", [](const PipelineConfig&) { return make_brute_method(); }},
+    {"aabb", [](const PipelineConfig&) { return make_aabb_method(); }},
+    {"gpu", [](const PipelineConfig& config) { return make_gpu_method(config.gpu); }},
 };
 
 }  // namespace
@@ -29,9 +31,9 @@ std::vector<std::string> method_names() {
     return names;
 }
 
-std::unique_ptr<Method> make_method(std::string_view name) {
+std::unique_ptr<Method> make_method(std::string_view name, const PipelineConfig& config) {
     for (const MethodEntry& entry : k_methods) {
-        if (entry.name == name) return entry.make();
+        if (entry.name == name) return entry.make(config);
     }
     std::string known;
     for (const MethodEntry& entry : k_methods) known += (known.empty() ? "" : ", ") + std::string(entry.name);

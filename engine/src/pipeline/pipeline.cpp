@@ -27,7 +27,7 @@ Pipeline::Pipeline(PipelineConfig config) : m_config(std::move(config)) {
     if (m_config.threads < 0) {
         throw std::invalid_argument("threads must be >= 0, got " + std::to_string(m_config.threads));
     }
-    m_method = make_method(m_config.method);
+    m_method = make_method(m_config.method, m_config);
     if (m_config.threads > 0) m_thread_limit = std::make_unique<ThreadLimit>(m_config.threads);
 }
 

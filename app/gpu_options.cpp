@@ -1,0 +1,48 @@
+// --gpu-* options -> GpuCullConfig.
+
+#include "gpu_options.hpp"
+
+#include "collidescope/error.hpp"
+
+namespace collidescope::app {
+
+void add_gpu_options(CLI::App& command, GpuOptions& options) {
+    const std::string group = "GPU cull (methods gpu, ...)";
+    command.add_option("--gpu-cull", options.cull,
+                       "How a pass reads its answers: queries (an occlusion query per P triangles, "
+                       "the thesis) or flags (one draw, per-triangle flags in a storage buffer)")
+        ->check(CLI::IsMember({"queries", "flags"}))
+        ->capture_default_str()
+        ->group(group);
+    command.add_option("--gpu-resolution", options.resolution, "Width and height of each view's depth buffer")
+        ->check(CLI::Range(1, 8192))
+        ->capture_default_str()
+        ->group(group);
+    command.add_option("--gpu-views", options.views, "View axes in the order used: one to three of x, y, z")
+        ->capture_default_str()
+        ->group(group);
+    command.add_option("--triangles-per-query", options.triangles_per_query,
+                       "P: triangles per occlusion query (thesis 4.2.3)")
+        ->check(CLI::Range(1u, 1u << 20))
+        ->capture_default_str()
+        ->group(group);
+}
+
+GpuCullConfig gpu_config(const GpuOptions& options) {
+    GpuCullConfig config;
+    config.variant = options.cull == "flags" ? GpuCullVariant::Flags : GpuCullVariant::Queries;
+    config.resolution = options.resolution;
+    config.triangles_per_query = options.triangles_per_query;
+    config.views.clear();
+    for (const char axis : options.views) {
+        const std::size_t index = std::string_view("xyz").find(axis);
+        if (index == std::string_view::npos || options.views.size() > 3) {
+            throw InputError("--gpu-views '" + options.views + "': expected one to three of x, y, z");
+        }
+        config.views.push_back(static_cast<int>(index));
+    }
+    if (config.views.empty()) throw InputError("--gpu-views is empty: expected one to three of x, y, z");
+    return config;
+}
+
+}  // namespace collidescope::app

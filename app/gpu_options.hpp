@@ -1,0 +1,28 @@
+#pragma once
+// The GPU cull's command-line options, shared by the subcommands that run the engine
+// (check, bench, record): --gpu-cull, --gpu-resolution, --gpu-views, --triangles-per-query.
+
+#include "collidescope/gpu_cull.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <memory>
+#include <string>
+
+namespace collidescope::app {
+
+/// What the options hold as parsed.
+struct GpuOptions {
+    std::string cull = "queries";  ///< queries | flags
+    int resolution = GpuCullConfig{}.resolution;
+    std::string views = "zxy";     ///< one to three of x, y, z, in order
+    std::uint32_t triangles_per_query = GpuCullConfig{}.triangles_per_query;
+};
+
+/// Adds the options to `command`, writing into `options` (which must outlive parsing).
+void add_gpu_options(CLI::App& command, GpuOptions& options);
+
+/// The engine configuration the options describe. Throws InputError on a bad --gpu-views.
+GpuCullConfig gpu_config(const GpuOptions& options);
+
+}  // namespace collidescope::app

@@ -1,0 +1,58 @@
+#pragma once
+/// Options and per-frame trace of Mode 2, the GPU image-space cull (engine/src/gpucull;
+/// thesis 3.2, 4.2; docs/gpu_cull.md).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace collidescope {
+
+/// How a cull pass learns which items are not fully visible.
+enum class GpuCullVariant {
+    Queries,  ///< one occlusion query per item or batch of triangles (CULLIDE, the thesis)
+    Flags,    ///< one draw per object; the fragment shader sets per-triangle flags (query-free)
+};
+
+/// Options of the GPU cull.
+struct GpuCullConfig {
+    int resolution = 512;                 ///< width and height of each view's depth buffer, pixels
+    std::vector<int> views = {2, 0, 1};   ///< view axes in the order used (0 = x, 1 = y, 2 = z)
+    std::uint32_t triangles_per_query = 16;  ///< P: triangles per occlusion query (Queries only)
+    GpuCullVariant variant = GpuCullVariant::Queries;
+    bool object_level = true;             ///< cull whole objects before their triangles
+};
+
+/// One cull pass: a level (objects or triangles), a view, a direction.
+struct GpuPassInfo {
+    std::uint8_t level = 0;         ///< 0 objects, 1 triangles
+    std::uint8_t view = 0;          ///< view axis (0 = x, 1 = y, 2 = z)
+    std::uint8_t reverse = 0;       ///< 0 forward pass, 1 reverse pass
+    std::uint32_t items_tested = 0; ///< objects or triangles tested (the first drawn needs no test)
+    std::uint32_t items_hidden = 0; ///< of those, not fully visible (some sample at or behind)
+    std::uint32_t queries = 0;      ///< occlusion queries issued (0 with flags)
+    std::uint64_t samples_passed = 0;  ///< samples counted by those queries
+    std::uint32_t triangles_per_query = 0;  ///< P used (0 with flags)
+};
+
+/// One view of one level: the PCS before and after its two passes.
+struct GpuViewInfo {
+    std::uint8_t level = 0;
+    std::uint8_t view = 0;
+    std::uint32_t pcs_in = 0;   ///< objects or triangles in the PCS before the view
+    std::uint32_t pcs_out = 0;  ///< after it
+};
+
+/// What the GPU cull did in one frame.
+struct GpuFrameInfo {
+    std::vector<GpuPassInfo> passes;
+    std::vector<GpuViewInfo> views;
+    std::uint32_t pcs_objects_in = 0;     ///< objects in inter-object pairs
+    std::uint32_t pcs_objects_out = 0;    ///< objects left with triangles in the PCS
+    std::uint32_t pcs_triangles_in = 0;   ///< their triangles
+    std::uint32_t pcs_triangles_out = 0;  ///< triangles that survived the cull
+    std::uint64_t queries = 0;            ///< occlusion queries issued in the frame
+    std::string renderer;                 ///< GL_RENDERER of the context that culled
+};
+
+}  // namespace collidescope
