@@ -92,8 +92,10 @@ int run_record(const RecordOptions& options) {
     const std::uint64_t budget = options.budget.empty() ? 0 : parse_size(options.budget, "--budget");
     const Scene scene = open_scene(options.inputs, options.scene);
     const FrameRange range = parse_frame_range(options.frames, scene.source->frame_count());
-    const PipelineConfig config{options.method, resolve_self_collision(options.self, options.no_self, scene),
-                                options.threads};
+    PipelineConfig config;
+    config.method = options.method;
+    config.self_collision = resolve_self_collision(options.self, options.no_self, scene);
+    config.threads = options.threads;
     Pipeline pipeline(config);
     Frame frame = scene.source->frame(range.begin);
 

@@ -1,0 +1,44 @@
+#pragma once
+// Helpers of the recorder tests: recording a scene in-process while capturing what the engine
+// reported, scenes for the tests, and editing a recording with HDF5 directly (to break it).
+
+#include "collidescope/pipeline.hpp"
+#include "collidescope/scene.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace collidescope::testing {
+
+/// What the engine reported for one frame, copied.
+struct CapturedFrame {
+    FrameStats stats;
+    std::vector<TrianglePair> pairs;
+    std::vector<std::vector<Vec3>> vertices;             ///< per object
+    std::vector<std::vector<TriIndices>> triangles;      ///< per object
+};
+
+/// Runs frames [begin, end) of `scene` through `method` with a Recorder writing `file` and
+/// returns what every frame reported.
+std::vector<CapturedFrame> record_in_process(const Scene& scene, const std::filesystem::path& file,
+                                             std::uint32_t begin, std::uint32_t end, bool self_collision,
+                                             const std::string& method = "brute");
+
+/// Two sheets of `cells` x `cells` cells (2 cells^2 triangles each): one flat at z = 0, one
+/// upright, sweeping through it along y over `frames` frames (apart, crossing, apart).
+Scene crossing_sheets(std::uint32_t cells, std::uint32_t frames);
+
+/// Overwrites element `index` of a 1-D integer dataset.
+void overwrite_u64(const std::filesystem::path& file, const std::string& dataset, std::uint64_t index,
+                   std::uint64_t value);
+/// Sets (or replaces) an integer attribute of object `object` ("/" for the root).
+void set_int_attr(const std::filesystem::path& file, const std::string& object, const std::string& name,
+                  std::int64_t value);
+/// Deletes attribute `name` of `object`.
+void delete_attr(const std::filesystem::path& file, const std::string& object, const std::string& name);
+/// Writes an HDF5 file that is not a recording (one dataset, no schema attribute).
+void write_foreign_hdf5(const std::filesystem::path& file);
+
+}  // namespace collidescope::testing
