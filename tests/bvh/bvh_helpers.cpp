@@ -102,7 +102,11 @@ MethodRun run_method(Method& method, const std::vector<Frame>& frames, bool self
 
 MethodRun run_pipeline(const std::string& method, const std::vector<Frame>& frames, bool self_collision,
                        int threads) {
-    Pipeline pipeline({method, self_collision, threads});
+    PipelineConfig config;
+    config.method = method;
+    config.self_collision = self_collision;
+    config.threads = threads;
+    Pipeline pipeline(config);
     MethodRun run;
     for (const Frame& frame : frames) {
         FrameResult result = pipeline.process(frame);

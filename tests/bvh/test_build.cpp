@@ -131,6 +131,7 @@ TEST(BvhValidator, ReportsCorruptions) {
     EXPECT_TRUE(broken([](Tree& t) { t.nodes[0].box.hi[0] -= 0.5; }));                  // child sticks out
     EXPECT_TRUE(broken([](Tree& t) { t.nodes.back().box.lo[2] += 1e-9; }));              // leaf not containing
     EXPECT_TRUE(broken([](Tree& t) { t.triangle_ids[3] = t.triangle_ids[4]; }));         // a triangle twice
+    EXPECT_TRUE(broken([](Tree& t) { std::swap(t.leaf_triangles[0], t.leaf_triangles[5]); }));  // stale copy
     EXPECT_TRUE(broken([](Tree& t) { t.nodes[0].index = 1; }));                           // bad child index
     EXPECT_TRUE(broken([](Tree& t) { t.nodes.pop_back(); }));                             // counts
     EXPECT_TRUE(broken([](Tree& t) { t.refit_plan.top.push_back(0); }));                  // plan overlap

@@ -109,6 +109,10 @@ BuildStats build_tree(std::span<const TriIndices> triangles, std::span<const Vec
     }
     tree.nodes = to_preorder(raw);
     tree.triangle_ids = std::move(raw.ids);
+    tree.leaf_triangles.resize(n);
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 8192), [&](const tbb::blocked_range<std::uint32_t>& r) {
+        for (std::uint32_t k = r.begin(); k != r.end(); ++k) tree.leaf_triangles[k] = triangles[tree.triangle_ids[k]];
+    });
     plan_range(tree, {0, static_cast<std::uint32_t>(tree.nodes.size())}, std::max(config.refit_grain, 1u),
                tree.refit_plan);
     const RefitStats fitted = refit(tree, triangles, vertices);

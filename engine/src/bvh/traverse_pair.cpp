@@ -12,14 +12,16 @@ void leaf_pair(const WorkItem& item, const MeshView& a, const Node& leaf_a, cons
                const Node& leaf_b, std::vector<TrianglePair>& candidates, TraversalStats& stats) {
     const std::uint32_t* ids_a = a.tree->triangle_ids.data() + leaf_a.index;
     const std::uint32_t* ids_b = b.tree->triangle_ids.data() + leaf_b.index;
+    const TriIndices* tris_a = a.tree->leaf_triangles.data() + leaf_a.index;
+    const TriIndices* tris_b = b.tree->leaf_triangles.data() + leaf_b.index;
     std::array<Aabb, k_cached> boxes_b;
     const bool cached = leaf_b.count <= k_cached;
-    for (std::uint32_t j = 0; cached && j < leaf_b.count; ++j) boxes_b[j] = triangle_box(b.triangles, b.vertices, ids_b[j]);
+    for (std::uint32_t j = 0; cached && j < leaf_b.count; ++j) boxes_b[j] = triangle_box(tris_b[j], b.vertices);
     const bool same_object = item.obj_a == item.obj_b;
     for (std::uint32_t i = 0; i < leaf_a.count; ++i) {
-        const Aabb box_a = triangle_box(a.triangles, a.vertices, ids_a[i]);
+        const Aabb box_a = triangle_box(tris_a[i], a.vertices);
         for (std::uint32_t j = 0; j < leaf_b.count; ++j) {
-            const Aabb box_b = cached ? boxes_b[j] : triangle_box(b.triangles, b.vertices, ids_b[j]);
+            const Aabb box_b = cached ? boxes_b[j] : triangle_box(tris_b[j], b.vertices);
             if (!overlaps(box_a, box_b)) continue;
             candidates.push_back(same_object ? make_pair_ordered(item.obj_a, ids_a[i], item.obj_b, ids_b[j])
                                              : TrianglePair{item.obj_a, ids_a[i], item.obj_b, ids_b[j]});

@@ -94,6 +94,9 @@ private:
                 continue;
             }
             ++m_seen[tri];
+            if (k >= m_tree.leaf_triangles.size() || m_tree.leaf_triangles[k] != m_triangles[tri]) {
+                fail("leaf_triangles[" + std::to_string(k) + "] is not triangle " + std::to_string(tri));
+            }
             const Aabb box = triangle_box(m_triangles, m_vertices, tri);
             fitted.grow(box);
             if (!contains(node.box, box)) {
