@@ -62,7 +62,7 @@ TEST_P(ExportRoundTrip, CheckOnExportedFilesFindsTheScenesPairs) {
 }
 
 INSTANTIATE_TEST_SUITE_P(DataSets, ExportRoundTrip, ::testing::Values("A", "B", "C", "D", "E1"),
-                         [](const auto& info) { return info.param; });
+                         [](const auto& param_info) { return param_info.param; });
 
 // Every exported frame file holds exactly the generated vertices and triangles, including across
 // D's topology change.
