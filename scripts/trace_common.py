@@ -1,0 +1,45 @@
+"""Shared helpers of the trace scripts: open a collidescope recording with h5py alone.
+
+The layout is docs/recording.md. Every per-frame dataset has one row per recorded frame; a
+recording that was killed may have one dataset a row longer than another, so the scripts use
+the complete frames only (the smallest length, as the tool's reader does).
+"""
+import sys
+
+import h5py
+
+SCHEMA = "collidescope-trace"
+MAJOR = 1
+
+
+def open_recording(path):
+    """Opens PATH read-only (SWMR, so a recording being written or killed opens too)."""
+    try:
+        f = h5py.File(path, "r", swmr=True)
+    except OSError:
+        try:
+            f = h5py.File(path, "r")
+        except OSError as error:
+            sys.exit("%s: cannot open as HDF5: %s" % (path, error))
+    if f.attrs.get("schema") != SCHEMA:
+        sys.exit("%s: not a collidescope recording" % path)
+    major = int(f.attrs["schema_version_major"])
+    if major > MAJOR:
+        sys.exit("%s: schema version %d is newer than these scripts read (%d)" % (path, major, MAJOR))
+    return f
+
+
+def frames_complete(f):
+    """Frames whose every per-frame dataset row is present."""
+    lengths = [len(f["frames/index"]), len(f["frames/method"]), len(f["collisions/offsets"]) - 1]
+    for group in ("frames/ms", "frames/counts"):
+        lengths += [len(d) for d in f[group].values()]
+    for obj in f["objects"].values():
+        lengths.append(len(obj["vertex_offsets"]) - 1)
+    return min(lengths)
+
+
+def methods(f, n):
+    """Method name of each of the first N frames."""
+    names = {code: name for name, code in h5py.check_enum_dtype(f["frames/method"].dtype).items()}
+    return [names[int(code)] for code in f["frames/method"][:n]]

@@ -1,0 +1,51 @@
+#!/usr/bin/python3
+"""Plots per-frame time coloured by the method in force.
+
+Usage: trace_plot_times.py RUN.h5 [-o times.png] [--stage total]
+
+One point per frame (x: scene frame, y: the stage's milliseconds from /frames/ms/<stage>),
+coloured by /frames/method, with a legend per method. Writes a PNG (matplotlib, Agg).
+"""
+import argparse
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from trace_common import frames_complete, methods, open_recording  # noqa: E402
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[1])
+    parser.add_argument("recording")
+    parser.add_argument("-o", "--output", default="times.png")
+    parser.add_argument("--stage", default="total", help="a dataset of /frames/ms (default total)")
+    args = parser.parse_args()
+    with open_recording(args.recording) as f:
+        if args.stage not in f["frames/ms"]:
+            sys.exit("%s: no stage %s (stages: %s)" % (args.recording, args.stage, ", ".join(f["frames/ms"])))
+        n = frames_complete(f)
+        frames = f["frames/index"][:n]
+        ms = f["frames/ms/" + args.stage][:n]
+        unit = f["frames/ms/" + args.stage].attrs["unit"]
+        per_frame = methods(f, n)
+    fig, ax = plt.subplots(figsize=(10, 4))
+    for name in sorted(set(per_frame)):
+        xs = [x for x, m in zip(frames, per_frame) if m == name]
+        ys = [y for y, m in zip(ms, per_frame) if m == name]
+        ax.plot(xs, ys, "o", markersize=3, label=name)
+    ax.plot(frames, ms, "-", color="0.8", linewidth=0.8, zorder=0)
+    ax.set_xlabel("frame")
+    ax.set_ylabel("%s (%s)" % (args.stage, unit))
+    ax.set_title("%s: %s per frame, coloured by method" % (args.recording, args.stage))
+    ax.legend(title="method")
+    fig.tight_layout()
+    fig.savefig(args.output, dpi=100)
+    print("wrote %s (%d frames)" % (args.output, n))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
