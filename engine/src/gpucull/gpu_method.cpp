@@ -5,7 +5,7 @@
 #include "gpucull/cull_renderer.hpp"
 #include "gpucull/gl_context.hpp"
 #include "gpucull/image_space_cull.hpp"
-#include "gpucull/survivor_pairs.hpp"
+#include "gpucull/final_hierarchy.hpp"
 #include "pipeline/narrow_phase.hpp"
 #include "pipeline/stopwatch.hpp"
 
@@ -68,7 +68,10 @@ public:
         stats.ms.gpu_readback += times.readback;
         stopwatch.lap_ms();
 
-        const std::vector<TrianglePair> candidates = final_step(context, pcs, stats);
+        gpucull::FinalStepStats final_stats;
+        const std::vector<TrianglePair> candidates = gpucull::final_step_candidates(context, pcs, final_stats);
+        stats.counts.box_tests += final_stats.box_tests;
+        stats.counts.nodes_visited += final_stats.nodes_visited;
         stats.ms.final_hierarchy += stopwatch.lap_ms();
         stats.ms.cull += times.render + times.readback + stats.ms.final_hierarchy;
         stats.counts.candidate_pairs += candidates.size();
@@ -77,30 +80,6 @@ public:
     }
 
 private:
-    // Candidate pairs among the survivors of each inter-object pair; all of an object's own
-    // box-overlapping pairs under self-collision.
-    static std::vector<TrianglePair> final_step(const FrameContext& context, const std::vector<PcsObject>& pcs,
-                                                FrameStats& stats) {
-        const auto survivors = [&](std::uint32_t object) -> const PcsObject* {
-            const auto it = std::lower_bound(pcs.begin(), pcs.end(), object,
-                                             [](const PcsObject& e, std::uint32_t o) { return e.object < o; });
-            return it != pcs.end() && it->object == object ? &*it : nullptr;
-        };
-        std::vector<TrianglePair> candidates;
-        for (const ObjectPair& pair : context.object_pairs) {
-            if (pair.a == pair.b) {
-                if (context.self_collision) stats.counts.box_tests += gpucull::self_pairs(context.frame, pair.a, candidates);
-                continue;
-            }
-            const PcsObject* a = survivors(pair.a);
-            const PcsObject* b = survivors(pair.b);
-            if (a == nullptr || b == nullptr) continue;
-            stats.counts.box_tests += gpucull::survivor_pairs(context.frame, pair.a, a->triangles, pair.b,
-                                                              b->triangles, candidates);
-        }
-        return candidates;
-    }
-
     GpuCullConfig m_config;
     std::unique_ptr<gpucull::GlContext> m_context;  // before the renderer: it needs the context
     gpucull::CullRenderer m_renderer;

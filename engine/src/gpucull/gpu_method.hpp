@@ -1,8 +1,9 @@
 #pragma once
 // The `gpu` method (engine/src/gpucull): Mode 2 of the thesis ("Perform GPU 2"): the objects of
 // inter-object pairs go through the image-space cull, the survivors through the final step
-// (survivor_pairs), then the shared exact narrow phase. Self-collision pairs skip the GPU (the
-// cull is inter-object) and come from the final step over the whole object.
+// (final_hierarchy: a hierarchy over the survivors), then the exact narrow phase. Self-collision
+// pairs skip the GPU (the cull is inter-object) and come from the final step over the whole
+// object.
 
 #include "collidescope/gpu_cull.hpp"
 #include "collidescope/pipeline.hpp"
