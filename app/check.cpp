@@ -1,6 +1,7 @@
 // `collidescope check`: runs a scene's frames through a method and reports the colliding
 // triangle pairs (summary on stderr, --pairs TSV, --stats JSON Lines, exit code).
 
+#include "aabb_options.hpp"
 #include "check_sinks.hpp"
 #include "commands.hpp"
 #include "frame_range.hpp"
@@ -32,6 +33,7 @@ struct CheckOptions {
     bool exit_zero = false;
     bool quiet = false;
     GpuOptions gpu;
+    AabbCliOptions aabb;
 };
 
 constexpr const char* k_footer = R"(Frames (--frames) are numbered from 0 in scene order and the range is half-open:
@@ -65,6 +67,7 @@ int run_check(const CheckOptions& options) {
     config.self_collision = resolve_self_collision(options.self, options.no_self, scene);
     config.threads = options.threads;
     config.gpu = gpu_config(options.gpu);
+    config.aabb = aabb_options(options.aabb);
     Pipeline pipeline(config);
 
     Progress progress(range.end - range.begin);
@@ -128,6 +131,7 @@ Command add_check_command(CLI::App& app) {
     check->add_flag("--exit-zero", options->exit_zero, "Exit 0 even when collisions are found");
     check->add_flag("-q,--quiet", options->quiet, "Only the total line on stderr, no per-frame lines");
     add_gpu_options(*check, options->gpu);
+    add_aabb_options(*check, options->aabb);
     return {check, [options] { return run_check(*options); }};
 }
 

@@ -80,6 +80,14 @@ void StatsWriter::on_frame(const FrameReport& report) {
     line["ms"] = std::move(ms);
     line["counts"] = std::move(counts);
     if (report.stats.gpu) line["gpu"] = gpu_json(*report.stats.gpu);
+    if (report.stats.aabb) {
+        const AabbFrameInfo& aabb = *report.stats.aabb;
+        line["aabb"] = {{"rebuild_reasons", rebuild_reason_names(aabb.rebuild_reasons)},
+                        {"rebuilt_objects", aabb.rebuilt_objects},
+                        {"background_started", aabb.background_started},
+                        {"background_swaps", aabb.background_swaps},
+                        {"tree_quality", aabb.tree_quality}};
+    }
     m_out << line.dump() << '\n';
 }
 

@@ -2,6 +2,7 @@
 /// The per-frame pipeline (engine/src/pipeline): update, object level, the method's culling
 /// and narrow phase, then the report to the trace sinks.
 
+#include "collidescope/aabb_options.hpp"
 #include "collidescope/gpu_cull.hpp"
 #include "collidescope/scene.hpp"
 #include "collidescope/stats.hpp"
@@ -28,6 +29,7 @@ struct PipelineConfig {
     /// pipelines alive at once, the smallest limit wins.
     int threads = 0;
     GpuCullConfig gpu;  ///< options of the GPU cull (methods gpu, ...)
+    AabbOptions aabb;   ///< options of the AABB hierarchies (method aabb)
 };
 
 /// One object pair whose boxes overlap (a == b for self-collision).

@@ -91,7 +91,8 @@ struct AabbFrameInfo {
     std::uint32_t background_started = 0;  ///< rebuilds handed to the worker thread
     std::uint32_t background_swaps = 0;    ///< worker-built hierarchies swapped in (then refit)
     /// Tree quality: the largest, over the hierarchies used this frame, of SAH cost divided by
-    /// the SAH cost right after that hierarchy's last build (1 = as built; larger = degraded).
+    /// the SAH cost right after that hierarchy's last build (1 = as built; larger = degraded),
+    /// taken after this frame's refits and before any rebuild (what the policy judged).
     double tree_quality = 0;
 };
 

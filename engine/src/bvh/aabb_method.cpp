@@ -34,6 +34,8 @@ public:
         const double built = now();
         m_trees.refit_rest(frame, used);
         const double refitted = now();
+        // The quality the policy judges: after refit, before any rebuild resets it.
+        for (const std::uint32_t object : used) info.tree_quality = std::max(info.tree_quality, m_trees.at(object).quality);
         m_trees.apply_policy(frame, used, m_last_detection_ms, info);
         const double rebuilt = now();
         std::vector<TrianglePair> candidates;
@@ -50,7 +52,6 @@ public:
         stats.counts.candidate_pairs += traversal.candidate_pairs;
         stats.counts.nodes_visited += traversal.nodes_visited;
         stats.counts.rebuilds += info.rebuilt_objects + info.background_started;
-        for (const std::uint32_t object : used) info.tree_quality = std::max(info.tree_quality, m_trees.at(object).quality);
         stats.aabb = info;
         m_last_detection_ms = narrowed - rebuilt;
     }
@@ -93,10 +94,26 @@ std::unique_ptr<Method> make_aabb_method(AabbConfig config) {
     return std::make_unique<AabbMethod>(std::move(config));
 }
 
+AabbConfig aabb_config(const AabbOptions& options) {
+    AabbConfig config;
+    config.build.builder = options.builder == AabbBuilder::Sah ? Builder::Sah : Builder::Lbvh;
+    config.policy.rule = options.rebuild == AabbRebuildRule::Thesis  ? RebuildRule::Thesis
+                         : options.rebuild == AabbRebuildRule::Never ? RebuildRule::Never
+                                                                     : RebuildRule::Quality;
+    config.policy.quality_limit = options.quality_limit;
+    config.policy.thesis_fraction = options.thesis_fraction;
+    config.background = options.background ? BackgroundMode::Async : BackgroundMode::Off;
+    return config;
+}
+
 }  // namespace collidescope::bvh
 
 namespace collidescope {
 
 std::unique_ptr<Method> make_aabb_method() { return bvh::make_aabb_method(bvh::AabbConfig{}); }
+
+std::unique_ptr<Method> make_aabb_method(const AabbOptions& options) {
+    return bvh::make_aabb_method(bvh::aabb_config(options));
+}
 
 }  // namespace collidescope

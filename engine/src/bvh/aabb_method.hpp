@@ -8,6 +8,7 @@
 #include "bvh/rebuild_policy.hpp"
 #include "bvh/traverse.hpp"
 
+#include "collidescope/aabb_options.hpp"
 #include "collidescope/pipeline.hpp"
 
 #include <functional>
@@ -53,11 +54,16 @@ struct AabbConfig {
 /// Makes the `aabb` method.
 std::unique_ptr<Method> make_aabb_method(AabbConfig config);
 
+/// The configuration that `options` (the command line's, through PipelineConfig) describe.
+AabbConfig aabb_config(const AabbOptions& options);
+
 }  // namespace collidescope::bvh
 
 namespace collidescope {
 
-/// Makes the `aabb` method with the default configuration (the registry's entry).
+/// Makes the `aabb` method with the default configuration.
 std::unique_ptr<Method> make_aabb_method();
+/// Makes the `aabb` method as `options` say (the registry's entry).
+std::unique_ptr<Method> make_aabb_method(const AabbOptions& options);
 
 }  // namespace collidescope

@@ -19,7 +19,7 @@ struct MethodEntry {
 // In the order method_names() lists them.
 constexpr MethodEntry k_methods[] = {
     {"brute", [](const PipelineConfig&) { return make_brute_method(); }},
-    {"aabb", [](const PipelineConfig&) { return make_aabb_method(); }},
+    {"aabb", [](const PipelineConfig& config) { return make_aabb_method(config.aabb); }},
     {"gpu", [](const PipelineConfig& config) { return make_gpu_method(config.gpu); }},
 };
 

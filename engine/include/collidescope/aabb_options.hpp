@@ -1,0 +1,30 @@
+#pragma once
+/// Options of the `aabb` method (Mode 1, engine/src/bvh), as the command line and
+/// PipelineConfig carry them. Defaults are the method's defaults.
+
+#include <cstdint>
+
+namespace collidescope {
+
+/// Which builder (re)builds the per-object hierarchies.
+enum class AabbBuilder : std::uint8_t {
+    Lbvh,  ///< linear (Morton) build: the default, fastest as a rebuild (bench_bvh_datasets)
+    Sah,   ///< top-down binned SAH: slower build, cheaper trees
+};
+
+/// When a refit hierarchy is rebuilt (a topology change always rebuilds).
+enum class AabbRebuildRule : std::uint8_t {
+    Quality,  ///< SAH cost above quality_limit times the cost right after the last build
+    Thesis,   ///< thesis 5.2.1: last frame's detection time above thesis_fraction of a rebuild
+    Never,    ///< refit only
+};
+
+struct AabbOptions {
+    AabbBuilder builder = AabbBuilder::Lbvh;
+    AabbRebuildRule rebuild = AabbRebuildRule::Quality;
+    double quality_limit = 1.5;     ///< quality rule threshold (relative SAH cost)
+    double thesis_fraction = 0.75;  ///< thesis rule: "three fourths of a rebuild"
+    bool background = true;         ///< policy rebuilds on a worker thread (thesis contribution 3)
+};
+
+}  // namespace collidescope
