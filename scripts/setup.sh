@@ -19,6 +19,8 @@ PACKAGES=(
   libosmesa6-dev libegl-dev libepoxy-dev libimgui-dev libstb-dev
   # data: the Stanford bunny (/usr/share/glmark2/models/bunny.obj)
   glmark2-data
+  # peers of the aabb method (bench/peers/bench_bvh_peers, built only when present)
+  libembree-dev libfcl-dev
   # trace scripts and their tests
   python3 python3-h5py python3-numpy python3-matplotlib
   ca-certificates
