@@ -30,6 +30,8 @@ struct RecordOptions {
     std::string depth = "off";      ///< off | every:N
     std::string budget;             ///< "" = no bound
     std::string queue = "256M";     ///< writer queue memory cap
+    int compression = 1;            ///< gzip level of positions, pairs, triangles (0 = none)
+    int writer_nice = 10;           ///< nice increment of the writer thread (0 = none)
     bool quiet = false;
 };
 
@@ -80,8 +82,12 @@ std::string summary_line(const recorder::RecordSummary& summary, const std::stri
         line += "; budget " + format_size(budget) + ": ";
         line += summary.positions_dropped == 0
                     ? "nothing dropped"
-                    : "dropped the vertex positions of " + std::to_string(summary.positions_dropped) +
-                          " frames (kept every " + std::to_string(summary.positions_stride) + "th frame at the end)";
+                    : "dropped the vertex positions of " + std::to_string(summary.positions_dropped) + " of " +
+                          std::to_string(summary.frames) + " frames (" +
+                          (summary.positions_stride == 0
+                               ? std::string("none kept at the end")
+                               : "every " + std::to_string(summary.positions_stride) + "th frame kept at the end") +
+                          "; no depth buffers to drop)";
         if (summary.file_bytes > budget) line += "; still over budget (pairs and stats alone exceed it)";
     }
     return line;
@@ -103,6 +109,8 @@ int run_record(const RecordOptions& options) {
     recorder_config.path = options.output;
     recorder_config.budget_bytes = budget;
     recorder_config.queue_bytes = parse_size(options.queue, "--queue-memory");
+    recorder_config.deflate_level = options.compression;
+    recorder_config.writer_nice = options.writer_nice;
     recorder::Recorder recorder(recorder_config, session_info(scene, options, config, range), frame);
     pipeline.add_sink(recorder);
 
@@ -153,6 +161,13 @@ Command add_record_command(CLI::App& app) {
         ->type_name("SIZE");
     record->add_option("--queue-memory", options->queue, "Memory cap of frames waiting for the writer thread")
         ->type_name("SIZE")
+        ->capture_default_str();
+    record->add_option("--compression", options->compression,
+                       "gzip level (with shuffle) of positions, pairs and triangles; 0 = uncompressed")
+        ->check(CLI::Range(0, 9))
+        ->capture_default_str();
+    record->add_option("--writer-nice", options->writer_nice, "Nice increment of the writer thread (0 = same priority)")
+        ->check(CLI::Range(0, 19))
         ->capture_default_str();
     record->add_flag("-q,--quiet", options->quiet, "Only the final line on stderr");
     return {record, [options] { return run_record(*options); }};

@@ -6,23 +6,21 @@
 
 #include <charconv>
 #include <cstdio>
+#include <string_view>
 
 namespace collidescope::app {
 
 std::uint64_t parse_size(const std::string& text, const std::string& option) {
     std::uint64_t value = 0;
-    const char* end = text.data() + text.size();
-    const auto [next, error] = std::from_chars(text.data(), end, value);
-    std::string suffix(next, end);
-    if (suffix == "B" || suffix.empty()) suffix = "";
-    else if (suffix.size() >= 2 && suffix.substr(1) == "iB") suffix = suffix.substr(0, 1);
-    else if (suffix.size() == 2 && suffix[1] == 'B') suffix = suffix.substr(0, 1);
-    std::uint64_t scale = 1;
-    if (suffix == "K" || suffix == "k") scale = 1ull << 10;
-    else if (suffix == "M") scale = 1ull << 20;
-    else if (suffix == "G") scale = 1ull << 30;
-    else if (!suffix.empty()) scale = 0;
-    if (error != std::errc() || next == text.data() || scale == 0 || value == 0 || value > (~0ull) / scale) {
+    const char* const end = text.data() + text.size();
+    const std::from_chars_result parsed = std::from_chars(text.data(), end, value);
+    const std::string_view suffix(parsed.ptr, static_cast<std::size_t>(end - parsed.ptr));
+    std::uint64_t scale = 0;
+    if (suffix.empty() || suffix == "B") scale = 1;
+    if (suffix == "K" || suffix == "k" || suffix == "KB" || suffix == "kB" || suffix == "KiB") scale = 1ull << 10;
+    if (suffix == "M" || suffix == "MB" || suffix == "MiB") scale = 1ull << 20;
+    if (suffix == "G" || suffix == "GB" || suffix == "GiB") scale = 1ull << 30;
+    if (parsed.ec != std::errc() || parsed.ptr == text.data() || scale == 0 || value == 0 || value > ~0ull / scale) {
         throw InputError(option + " must be a positive size such as 500K, 100M or 2G, not '" + text + "'");
     }
     return value * scale;

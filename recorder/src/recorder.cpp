@@ -13,29 +13,55 @@
 #include <mutex>
 #include <thread>
 
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
 namespace collidescope::recorder {
 namespace {
 
-/// --budget: keeps positions every `stride`th recorded frame, doubling the stride whenever
-/// the file, growing at its average rate so far, would pass the budget by the last frame.
+/// --budget: keeps positions every `stride`th recorded frame. From the file's growth since the
+/// first frames (which allocate every dataset's first chunk), it estimates what each further
+/// frame costs without positions and what each kept positions frame adds, and raises the stride
+/// (powers of 2, never lowered) to the least that fits the remaining frames into the budget;
+/// with no room for even one more positions frame, positions stop (stride 0).
 class PositionsBudget {
 public:
     PositionsBudget(std::uint64_t budget, std::uint64_t frames_total) : m_budget(budget), m_total(frames_total) {}
 
-    bool keep(std::uint64_t row) const { return row % m_stride == 0; }
-    /// After `rows_done` frames the file has `bytes` (of which `start_bytes` before frame 0).
-    void update(std::uint64_t rows_done, std::uint64_t bytes, std::uint64_t start_bytes) {
-        if (m_budget == 0 || rows_done == 0 || rows_done >= m_total) return;
-        const double per_frame = static_cast<double>(bytes - std::min(bytes, start_bytes)) / static_cast<double>(rows_done);
-        const double projected = static_cast<double>(bytes) + per_frame * static_cast<double>(m_total - rows_done);
-        if (projected > static_cast<double>(m_budget) && m_stride < (1u << 30)) m_stride *= 2;
+    bool keep(std::uint64_t row) const { return m_stride != 0 && row % m_stride == 0; }
+    /// After `rows_done` frames, `rows_kept` of them with positions.
+    void update(std::uint64_t rows_done, std::uint64_t rows_kept, std::uint64_t positions_bytes, std::uint64_t file_bytes) {
+        if (m_budget == 0 || m_stride == 0 || rows_done >= m_total) return;
+        if (rows_done <= k_warmup) {
+            m_base = {rows_done, rows_kept, positions_bytes, file_bytes};
+            if (file_bytes < m_budget) return;  // decide on the first frames only when already over
+        }
+        const double remaining = static_cast<double>(m_total - rows_done);
+        const double rows = static_cast<double>(std::max<std::uint64_t>(rows_done - m_base.rows, 1));
+        const double growth = static_cast<double>(file_bytes - std::min(file_bytes, m_base.file));
+        const double positions = static_cast<double>(positions_bytes - std::min(positions_bytes, m_base.positions));
+        const double kept = static_cast<double>(rows_kept - std::min(rows_kept, m_base.kept));
+        const double other = std::max(growth - positions, 0.0) / rows;
+        const double per_positions = kept > 0 ? positions / kept : static_cast<double>(positions_bytes) / static_cast<double>(std::max<std::uint64_t>(rows_kept, 1));
+        const double room = static_cast<double>(m_budget) - static_cast<double>(file_bytes) - remaining * other;
+        if (room <= per_positions) {
+            m_stride = 0;
+            return;
+        }
+        while (m_stride < (1u << 30) && remaining / m_stride * per_positions > room) m_stride *= 2;
     }
     std::uint32_t stride() const { return m_stride; }
 
 private:
+    static constexpr std::uint64_t k_warmup = 2;  ///< frames whose growth includes first chunks
+    struct Base {
+        std::uint64_t rows = 0, kept = 0, positions = 0, file = 0;
+    };
     std::uint64_t m_budget;
     std::uint64_t m_total;
     std::uint32_t m_stride = 1;
+    Base m_base;
 };
 
 std::vector<float> to_float(const std::vector<Vec3>& vertices) {
@@ -74,14 +100,23 @@ struct Recorder::State {
 };
 
 void Recorder::State::write_loop() {
-    const std::uint64_t start_bytes = file.file_bytes();
+    // Below the engine's threads: on a machine with few cores, a writer competing for a core
+    // stalls the engine's parallel loops. It catches up between frames (the queue absorbs it).
+    if (config.writer_nice > 0) {
+        setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), config.writer_nice);
+    }
+    std::uint64_t kept = 0;
     try {
         while (std::optional<FrameRecord> record = queue.pop()) {
             const bool keep = budget.keep(summary.frames);
             file.append(*record, keep);
             summary.positions_dropped += keep ? 0 : 1;
+            kept += keep ? 1 : 0;
             ++summary.frames;
-            if (config.budget_bytes > 0) budget.update(summary.frames, file.file_bytes(), start_bytes);
+            if (config.budget_bytes > 0) {
+                const std::uint64_t bytes = file.file_bytes();
+                budget.update(summary.frames, kept, file.positions_bytes(), bytes);
+            }
         }
     } catch (...) {
         std::lock_guard lock(error_mutex);

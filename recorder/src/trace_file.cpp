@@ -182,6 +182,12 @@ std::uint64_t TraceFile::file_bytes() const {
     return size;
 }
 
+std::uint64_t TraceFile::positions_bytes() const {
+    std::uint64_t total = 0;
+    for (const ObjectColumns& columns : m_objects) total += H5Dget_storage_size(columns.positions.dataset.get());
+    return total;
+}
+
 void TraceFile::close() {
     m_index.dataset.reset();
     m_method.dataset.reset();

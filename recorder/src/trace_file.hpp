@@ -26,6 +26,8 @@ public:
     void append(const FrameRecord& record, bool keep_positions);
     /// Current size of the file in bytes.
     std::uint64_t file_bytes() const;
+    /// Bytes the positions datasets occupy (all objects).
+    std::uint64_t positions_bytes() const;
     /// Closes the file (SWMR ends). Throws when the final flush fails.
     void close();
 

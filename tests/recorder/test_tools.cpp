@@ -10,6 +10,7 @@
 
 #include "collidescope/datasets.hpp"
 #include "collidescope/mesh.hpp"
+#include "collidescope/recorder/reader.hpp"
 #include "collidescope/recorder/schema.hpp"
 
 #include <gtest/gtest.h>
@@ -150,6 +151,22 @@ TEST_F(RecorderTools, CompareFindsAPlantedDifferenceAtItsFrame) {
     EXPECT_NE(differ.out.find("first difference at frame 12;"), std::string::npos) << differ.out;
     EXPECT_NE(differ.out.find("1 frames differ"), std::string::npos) << differ.out;
     EXPECT_NE(differ.out.find("total"), std::string::npos) << differ.out;
+}
+
+TEST_F(RecorderTools, BudgetDropsPositionsAndSaysSo) {
+    const std::uint64_t whole = std::filesystem::file_size(m_dir.path() / "run.h5");
+    const testing::CliResult run = run_cli({"record", "--scene", "demo:small", "-o", "budget.h5", "--budget", "120K"}, m_dir.path());
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(run.err.find("dropped the vertex positions of"), std::string::npos) << run.err;
+    EXPECT_LT(std::filesystem::file_size(m_dir.path() / "budget.h5"), whole);
+    EXPECT_LE(std::filesystem::file_size(m_dir.path() / "budget.h5"), 120u * 1024);
+    EXPECT_EQ(run_cli({"validate", "budget.h5"}, m_dir.path()).exit_code, 0);
+    EXPECT_EQ(run_cli({"compare", "run.h5", "budget.h5"}, m_dir.path()).exit_code, 0) << "pairs are never dropped";
+    const recorder::Recording rec(m_dir.path() / "budget.h5");
+    std::uint64_t without = 0;
+    for (std::uint64_t r = 0; r < rec.frames_complete(); ++r) without += rec.positions(0, r).empty() ? 1 : 0;
+    EXPECT_GT(without, 0u);
+    EXPECT_FALSE(rec.positions(0, 0).empty()) << "the first frame keeps its positions";
 }
 
 }  // namespace

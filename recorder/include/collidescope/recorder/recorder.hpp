@@ -38,14 +38,15 @@ struct RecorderConfig {
     std::filesystem::path path;                 ///< the file to create (truncated if it exists)
     std::size_t queue_bytes = 256u << 20;       ///< memory cap of frames waiting for the writer
     std::uint64_t budget_bytes = 0;             ///< file size bound (0 = none): positions decimated to fit
-    int deflate_level = 4;                      ///< gzip level of compressed datasets (0-9)
+    int deflate_level = 1;                      ///< gzip level of compressed datasets (0-9; 1: cheapest)
+    int writer_nice = 10;                       ///< nice increment of the writer thread (Linux; 0 = none)
 };
 
 /// What a finished recording did.
 struct RecordSummary {
     std::uint64_t frames = 0;              ///< frames written
     std::uint64_t file_bytes = 0;          ///< final file size
-    std::uint32_t positions_stride = 1;    ///< positions kept every Nth frame (1 = all; --budget)
+    std::uint32_t positions_stride = 1;    ///< positions kept every Nth frame at the end (1 = all, 0 = none; --budget)
     std::uint64_t positions_dropped = 0;   ///< frames whose positions were dropped (--budget)
     std::uint64_t queue_peak_bytes = 0;    ///< largest queue held
 };
