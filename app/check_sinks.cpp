@@ -48,6 +48,13 @@ nlohmann::ordered_json gpu_json(const GpuFrameInfo& info) {
     gpu["pcs_objects"] = {info.pcs_objects_in, info.pcs_objects_out};
     gpu["pcs_triangles"] = {info.pcs_triangles_in, info.pcs_triangles_out};
     gpu["queries"] = info.queries;
+    gpu["triangles_per_query"] = info.triangles_per_query;
+    gpu["query_ms"] = info.query_ms;
+    gpu["rebuild_ms_per_triangle"] = info.rebuild_ms_per_triangle;
+    std::string chosen;
+    for (const std::uint8_t view : info.chosen_views) chosen += "xyz"[view];
+    gpu["chosen_views"] = chosen;
+    gpu["view_matrix"] = info.view_matrix;
     nlohmann::ordered_json views = nlohmann::ordered_json::array();
     for (const GpuViewInfo& view : info.views) {
         views.push_back({{"level", view.level == 0 ? "objects" : "triangles"}, {"view", std::string(1, "xyz"[view.view])},

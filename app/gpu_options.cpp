@@ -22,9 +22,17 @@ void add_gpu_options(CLI::App& command, GpuOptions& options) {
         ->capture_default_str()
         ->group(group);
     command.add_option("--triangles-per-query", options.triangles_per_query,
-                       "P: triangles per occlusion query (thesis 4.2.3)")
+                       "P: triangles per occlusion query (thesis 4.2.3); the first P when adaptive")
         ->check(CLI::Range(1u, 1u << 20))
         ->capture_default_str()
+        ->group(group);
+    command.add_flag("--gpu-fixed-views", options.fixed_views,
+                     "Use --gpu-views in order (no view configuration matrix, thesis 4.2.1)")->group(group);
+    command.add_flag("--gpu-no-sort", options.no_sort, "Do not sort objects along the view (thesis 4.2.2)")
+        ->group(group);
+    command.add_flag("--gpu-fixed-p", options.fixed_p,
+                     "Keep --triangles-per-query (no adaptive P, thesis 4.2.3)")->group(group);
+    command.add_flag("--gpu-no-object-level", options.no_object_level, "Cull triangles only, not objects first")
         ->group(group);
 }
 
@@ -33,6 +41,10 @@ GpuCullConfig gpu_config(const GpuOptions& options) {
     config.variant = options.cull == "flags" ? GpuCullVariant::Flags : GpuCullVariant::Queries;
     config.resolution = options.resolution;
     config.triangles_per_query = options.triangles_per_query;
+    config.view_matrix = !options.fixed_views;
+    config.sort_objects = !options.no_sort;
+    config.adaptive_p = !options.fixed_p;
+    config.object_level = !options.no_object_level;
     config.views.clear();
     for (const char axis : options.views) {
         const std::size_t index = std::string_view("xyz").find(axis);

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <random>
 
 namespace collidescope {
@@ -119,8 +120,13 @@ TEST(GpuCull, TouchingSheetsKeepTheirContacts) {
 // Queries and flags read the same comparisons, so they leave the same PCS.
 TEST(GpuCull, QueriesAndFlagsGiveTheSamePcs) {
     const Scene scene = make_builtin_scene("C:small");
-    Pipeline queries(gpu_config(128, GpuCullVariant::Queries, 1));
-    Pipeline flags(gpu_config(128, GpuCullVariant::Flags));
+    PipelineConfig queries_config = gpu_config(128, GpuCullVariant::Queries, 1);
+    queries_config.gpu.adaptive_p = false;  // P stays 1
+    queries_config.gpu.view_matrix = false;  // both use the views z, x, y
+    PipelineConfig flags_config = gpu_config(128, GpuCullVariant::Flags);
+    flags_config.gpu.view_matrix = false;
+    Pipeline queries(queries_config);
+    Pipeline flags(flags_config);
     for (std::uint32_t f = 0; f < scene.source->frame_count(); f += 5) {
         const Frame frame = scene.source->frame(f);
         const FrameResult a = queries.process(frame);
@@ -153,6 +159,30 @@ TEST_P(GpuDataSets, SmallPresetMatchesBruteEveryFrame) {
 
 INSTANTIATE_TEST_SUITE_P(Small, GpuDataSets, ::testing::Values("A", "B", "C", "D", "E1", "E4", "demo"),
                          [](const auto& param_info) { return param_info.param; });
+
+// The naive baseline and every mechanism switched off one at a time stay exact.
+TEST(GpuCull, NaiveAndEveryMechanismSwitchStayExact) {
+    const Scene scene = make_builtin_scene("D:small");
+    std::vector<PipelineConfig> configs(5, gpu_config(64, GpuCullVariant::Queries, 2));
+    configs[0].method = "gpu-naive";
+    configs[1].gpu.view_matrix = false;
+    configs[2].gpu.sort_objects = false;
+    configs[3].gpu.adaptive_p = false;
+    configs[4].gpu.object_level = false;
+    Pipeline brute(PipelineConfig{});
+    std::vector<std::unique_ptr<Pipeline>> pipelines;
+    for (const PipelineConfig& config : configs) pipelines.push_back(std::make_unique<Pipeline>(config));
+    for (std::uint32_t f = 0; f < scene.source->frame_count(); f += 3) {
+        const Frame frame = scene.source->frame(f);
+        const std::vector<TrianglePair> expected = brute.process(frame).colliding_pairs;
+        for (std::size_t i = 0; i < pipelines.size(); ++i) {
+            const FrameResult result = pipelines[i]->process(frame);
+            ASSERT_EQ(result.colliding_pairs, expected) << "config " << i << " frame " << f;
+            if (i == 0) EXPECT_EQ(result.stats.method, "gpu-naive");
+            if (i == 0 && result.stats.gpu->triangles_per_query != 0) EXPECT_EQ(result.stats.gpu->triangles_per_query, 1u);
+        }
+    }
+}
 
 TEST(GpuCull, BadConfigurationIsRejected) {
     PipelineConfig config = gpu_config(0, GpuCullVariant::Queries);

@@ -2,6 +2,7 @@
 /// Options and per-frame trace of Mode 2, the GPU image-space cull (engine/src/gpucull;
 /// thesis 3.2, 4.2; docs/gpu_cull.md).
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -14,13 +15,25 @@ enum class GpuCullVariant {
     Flags,    ///< one draw per object; the fragment shader sets per-triangle flags (query-free)
 };
 
-/// Options of the GPU cull.
+/// Options of the GPU cull. The thesis's three mechanisms (4.2) are each switchable.
 struct GpuCullConfig {
     int resolution = 512;                 ///< width and height of each view's depth buffer, pixels
-    std::vector<int> views = {2, 0, 1};   ///< view axes in the order used (0 = x, 1 = y, 2 = z)
-    std::uint32_t triangles_per_query = 16;  ///< P: triangles per occlusion query (Queries only)
+    /// View axes in the order used (0 = x, 1 = y, 2 = z); with `view_matrix` only their number
+    /// counts (the matrix picks the axes).
+    std::vector<int> views = {2, 0, 1};
+    /// P: triangles per occlusion query (Queries only); the first P when `adaptive_p` is on.
+    std::uint32_t triangles_per_query = 16;
     GpuCullVariant variant = GpuCullVariant::Queries;
     bool object_level = true;             ///< cull whole objects before their triangles
+    bool view_matrix = true;              ///< 4.2.1, Algorithm 2: views from the scored matrix
+    double view_decay_rate = 0.9;         ///< DECAY_RATE of Equation 4.2
+    bool sort_objects = true;             ///< 4.2.2: draw objects front to back along the view
+    bool adaptive_p = true;               ///< 4.2.3, Algorithm 3: P moves with the cost model
+    std::uint32_t max_triangles_per_query = 64;  ///< upper limit of the adaptive P
+    /// The thesis's naive baseline (method gpu-naive): a random order of the views each frame
+    /// (seeded), one triangle per query, no sort; the other mechanism switches are ignored.
+    bool naive = false;
+    std::uint64_t seed = 1;               ///< seeds the exploration and naive draws
 };
 
 /// One cull pass: a level (objects or triangles), a view, a direction.
@@ -53,6 +66,13 @@ struct GpuFrameInfo {
     std::uint32_t pcs_triangles_out = 0;  ///< triangles that survived the cull
     std::uint64_t queries = 0;            ///< occlusion queries issued in the frame
     std::string renderer;                 ///< GL_RENDERER of the context that culled
+    /// The view configuration matrix after this frame (row = cull pass, column = x, y, z);
+    /// zero when the matrix is off.
+    std::array<std::array<double, 3>, 3> view_matrix{};
+    std::vector<std::uint8_t> chosen_views;  ///< the axes this frame's passes used, in order
+    std::uint32_t triangles_per_query = 0;   ///< P this frame used (0 with flags)
+    double query_ms = 0;                  ///< O: measured milliseconds per occlusion query
+    double rebuild_ms_per_triangle = 0;   ///< R: final-step milliseconds per surviving triangle
 };
 
 }  // namespace collidescope

@@ -5,6 +5,8 @@
 #include "gpucull/cull_renderer.hpp"
 #include "gpucull/gl_context.hpp"
 #include "gpucull/image_space_cull.hpp"
+#include "gpucull/triangles_per_query.hpp"
+#include "gpucull/view_configuration.hpp"
 #include "gpucull/final_hierarchy.hpp"
 #include "pipeline/narrow_phase.hpp"
 #include "pipeline/stopwatch.hpp"
@@ -12,6 +14,8 @@
 #include "collidescope/error.hpp"
 
 #include <algorithm>
+#include <numeric>
+#include <random>
 #include <stdexcept>
 
 namespace collidescope {
@@ -49,38 +53,103 @@ std::vector<PcsObject> initial_pcs(const FrameContext& context) {
     return pcs;
 }
 
+// Fractions of the remaining triangle-level PCS that each view removed (Algorithm 2's input).
+std::vector<double> culled_fractions(const GpuFrameInfo& info) {
+    std::vector<double> culled;
+    for (const GpuViewInfo& view : info.views) {
+        if (view.level != 1) continue;
+        culled.push_back(view.pcs_in == 0 ? 1.0 : 1.0 - static_cast<double>(view.pcs_out) / view.pcs_in);
+    }
+    return culled;
+}
+
 class GpuMethod final : public Method {
 public:
     explicit GpuMethod(const GpuCullConfig& config)
-        : m_config((check_config(config), config)), m_context(gpucull::make_osmesa_context()) {}
+        : m_config((check_config(config), config)),
+          m_views({config.view_decay_rate, true, config.seed}),
+          m_per_query({config.naive ? 1 : config.triangles_per_query, config.max_triangles_per_query}),
+          m_random(config.seed),
+          m_context(gpucull::make_osmesa_context()) {}
 
-    std::string_view name() const override { return "gpu"; }
+    std::string_view name() const override { return m_config.naive ? "gpu-naive" : "gpu"; }
 
     void detect(const FrameContext& context, std::vector<TrianglePair>& pairs, FrameStats& stats) override {
         Stopwatch stopwatch;
         m_context->make_current();
         GpuFrameInfo info;
         info.renderer = m_context->renderer();
+        const gpucull::CullPlan plan = frame_plan();
         std::vector<PcsObject> pcs = initial_pcs(context);
         gpucull::CullTimes times;
-        gpucull::cull_pcs(context.frame, pcs, m_config, m_renderer, info, times);
+        gpucull::cull_pcs(context.frame, pcs, plan, m_renderer, info, times);
         stats.ms.gpu_render += times.render;
         stats.ms.gpu_readback += times.readback;
         stopwatch.lap_ms();
 
         gpucull::FinalStepStats final_stats;
         const std::vector<TrianglePair> candidates = gpucull::final_step_candidates(context, pcs, final_stats);
-        stats.counts.box_tests += final_stats.box_tests;
-        stats.counts.nodes_visited += final_stats.nodes_visited;
         stats.ms.final_hierarchy += stopwatch.lap_ms();
         stats.ms.cull += times.render + times.readback + stats.ms.final_hierarchy;
+        stats.counts.box_tests += final_stats.box_tests;
+        stats.counts.nodes_visited += final_stats.nodes_visited;
         stats.counts.candidate_pairs += candidates.size();
+        learn(plan, info, times, stats.ms.final_hierarchy);
         stats.gpu = std::move(info);
         narrow_phase(context.frame, candidates, pairs, stats);
     }
 
 private:
+    // This frame's views and P: from the mechanisms, or the naive baseline's draws.
+    gpucull::CullPlan frame_plan() {
+        gpucull::CullPlan plan{m_config.resolution, m_config.views, m_per_query.current(), m_config.variant,
+                               m_config.object_level, m_config.sort_objects && !m_config.naive};
+        const int passes = static_cast<int>(m_config.views.size());
+        if (m_config.naive) {
+            std::vector<int> axes = {0, 1, 2};
+            std::shuffle(axes.begin(), axes.end(), m_random);
+            plan.views.assign(axes.begin(), axes.begin() + passes);
+        } else if (m_config.view_matrix) {
+            plan.views = m_views.choose(passes);
+        }
+        if (!m_config.adaptive_p && !m_config.naive) plan.triangles_per_query = m_config.triangles_per_query;
+        return plan;
+    }
+
+    // Feeds the frame's results to Algorithm 2 and Algorithm 3, and records their state.
+    void learn(const gpucull::CullPlan& plan, GpuFrameInfo& info, const gpucull::CullTimes& times, double final_ms) {
+        for (const int view : plan.views) info.chosen_views.push_back(static_cast<std::uint8_t>(view));
+        std::uint64_t triangle_queries = 0;
+        double culled = 0;
+        for (const GpuPassInfo& pass : info.passes) triangle_queries += pass.level == 1 ? pass.queries : 0;
+        for (const GpuViewInfo& view : info.views) culled += view.level == 1 ? view.pcs_in - view.pcs_out : 0;
+        if (info.queries > 0) info.query_ms = (times.render + times.readback) / static_cast<double>(info.queries);
+        info.rebuild_ms_per_triangle = final_ms / std::max<double>(1, info.pcs_triangles_out);
+        info.triangles_per_query = plan.variant == GpuCullVariant::Flags ? 0 : plan.triangles_per_query;
+        if (m_config.naive) return;
+        if (m_config.view_matrix) {
+            std::vector<double> fractions = culled_fractions(info);
+            fractions.resize(plan.views.size(), 1.0);  // views skipped because the PCS emptied
+            m_views.update(plan.views, fractions);
+            info.view_matrix = m_views.matrix();
+        }
+        if (m_config.adaptive_p && plan.variant == GpuCullVariant::Queries && triangle_queries > 0) {
+            const double total = info.views.empty() ? 0 : static_cast<double>(first_triangle_view(info).pcs_in);
+            m_per_query.update({culled, total, info.query_ms, info.rebuild_ms_per_triangle});
+        }
+    }
+
+    static const GpuViewInfo& first_triangle_view(const GpuFrameInfo& info) {
+        for (const GpuViewInfo& view : info.views) {
+            if (view.level == 1) return view;
+        }
+        return info.views.front();
+    }
+
     GpuCullConfig m_config;
+    gpucull::ViewConfiguration m_views;
+    gpucull::TrianglesPerQuery m_per_query;
+    std::mt19937_64 m_random;
     std::unique_ptr<gpucull::GlContext> m_context;  // before the renderer: it needs the context
     gpucull::CullRenderer m_renderer;
 };

@@ -12,7 +12,7 @@
 
 namespace collidescope {
 
-/// Makes the `gpu` method with its own GL context (OSMesa). Throws UnavailableError with the
+/// Makes the `gpu` method (or `gpu-naive` when config.naive) with its own GL context (OSMesa). Throws UnavailableError with the
 /// reason when no context can be made.
 std::unique_ptr<Method> make_gpu_method(const GpuCullConfig& config);
 

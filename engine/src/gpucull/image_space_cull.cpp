@@ -6,17 +6,19 @@
 #include "pipeline/stopwatch.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace collidescope::gpucull {
 namespace {
 
 enum Level : std::uint8_t { Objects = 0, Triangles = 1 };
 
-// Every PCS triangle of one view as a quad, object after object.
+// Every PCS triangle of one view as a quad, object after object in drawing order.
 struct ViewSet {
     View view;
     std::vector<TriangleQuad> quads;
-    std::vector<std::uint32_t> first;  ///< per PCS object, its first quad; first.back() = total
+    std::vector<std::size_t> entry;    ///< per drawn object, its index in the PCS
+    std::vector<std::uint32_t> first;  ///< per drawn object, its first quad; first.back() = total
 };
 
 Eigen::AlignedBox3d pcs_bounds(const Frame& frame, const std::vector<PcsObject>& pcs) {
@@ -30,9 +32,28 @@ Eigen::AlignedBox3d pcs_bounds(const Frame& frame, const std::vector<PcsObject>&
     return bounds;
 }
 
-ViewSet make_view_set(const Frame& frame, const std::vector<PcsObject>& pcs, int axis, int resolution) {
-    ViewSet set{View{axis, pcs_bounds(frame, pcs), resolution, resolution}, {}, {0}};
-    for (const PcsObject& entry : pcs) {
+// The drawing order: PCS order, or sorted front to back along the view axis (thesis 4.2.2:
+// by each object's nearest PCS corner; ties keep PCS order).
+std::vector<std::size_t> drawing_order(const Frame& frame, const std::vector<PcsObject>& pcs, int axis, bool sort) {
+    std::vector<std::size_t> order(pcs.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    if (!sort) return order;
+    std::vector<double> nearest(pcs.size(), std::numeric_limits<double>::infinity());
+    for (std::size_t i = 0; i < pcs.size(); ++i) {
+        const ObjectFrame& object = frame.objects[pcs[i].object];
+        for (const std::uint32_t tri : pcs[i].triangles) {
+            for (const std::uint32_t v : object.topology->triangles[tri]) nearest[i] = std::min(nearest[i], object.vertices[v][axis]);
+        }
+    }
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return nearest[a] < nearest[b]; });
+    return order;
+}
+
+ViewSet make_view_set(const Frame& frame, const std::vector<PcsObject>& pcs, int axis, const CullPlan& plan) {
+    ViewSet set{View{axis, pcs_bounds(frame, pcs), plan.resolution, plan.resolution}, {}, {}, {0}};
+    set.entry = drawing_order(frame, pcs, axis, plan.sort_objects);
+    for (const std::size_t index : set.entry) {
+        const PcsObject& entry = pcs[index];
         const ObjectFrame& object = frame.objects[entry.object];
         for (const std::uint32_t tri : entry.triangles) {
             const std::array<Vec3, 3> p = object.corners(tri);
@@ -45,11 +66,11 @@ ViewSet make_view_set(const Frame& frame, const std::vector<PcsObject>& pcs, int
 
 // Issues one pass: each object (in pass order) is tested against the depth of the objects
 // drawn before it, then drawn. The first object meets an empty buffer and needs no test.
-void issue_pass(const ViewSet& set, Level level, bool reverse, const GpuCullConfig& config,
+void issue_pass(const ViewSet& set, Level level, bool reverse, const CullPlan& plan,
                 CullRenderer& renderer, GpuPassInfo& pass) {
     const std::size_t n = set.first.size() - 1;
     renderer.clear_depth();
-    if (level == Triangles && config.variant == GpuCullVariant::Flags) renderer.clear_flags(set.first.back());
+    if (level == Triangles && plan.variant == GpuCullVariant::Flags) renderer.clear_flags(set.first.back());
     for (std::size_t i = 0; i < n; ++i) {
         const std::size_t k = reverse ? n - 1 - i : i;
         const std::uint32_t first = set.first[k];
@@ -57,10 +78,10 @@ void issue_pass(const ViewSet& set, Level level, bool reverse, const GpuCullConf
         if (i > 0) {
             if (level == Objects) {
                 renderer.test_with_queries(first, count, count);
-            } else if (config.variant == GpuCullVariant::Flags) {
+            } else if (plan.variant == GpuCullVariant::Flags) {
                 renderer.test_with_flags(first, count);
             } else {
-                renderer.test_with_queries(first, count, config.triangles_per_query);
+                renderer.test_with_queries(first, count, plan.triangles_per_query);
             }
             pass.items_tested += level == Objects ? 1 : count;
         }
@@ -69,17 +90,17 @@ void issue_pass(const ViewSet& set, Level level, bool reverse, const GpuCullConf
 }
 
 // Reads the pass's answers back into `hidden` (per quad: not fully visible), in issue order.
-void read_pass(const ViewSet& set, Level level, bool reverse, const GpuCullConfig& config,
+void read_pass(const ViewSet& set, Level level, bool reverse, const CullPlan& plan,
                CullRenderer& renderer, GpuPassInfo& pass, std::vector<std::uint8_t>& hidden) {
     const std::size_t n = set.first.size() - 1;
-    const bool flags = level == Triangles && config.variant == GpuCullVariant::Flags;
+    const bool flags = level == Triangles && plan.variant == GpuCullVariant::Flags;
     const std::vector<std::uint32_t> answers = flags ? renderer.read_flags(set.first.back()) : renderer.read_queries();
     std::size_t query = 0;
     for (std::size_t i = 1; i < n; ++i) {
         const std::size_t k = reverse ? n - 1 - i : i;
         const std::uint32_t first = set.first[k];
         const std::uint32_t count = set.first[k + 1] - first;
-        const std::uint32_t batch = level == Objects ? count : (flags ? 1 : std::max<std::uint32_t>(1, config.triangles_per_query));
+        const std::uint32_t batch = level == Objects ? count : (flags ? 1 : std::max<std::uint32_t>(1, plan.triangles_per_query));
         for (std::uint32_t at = 0; at < count; at += batch) {
             const std::uint32_t size = std::min(batch, count - at);
             const std::uint32_t answer = flags ? answers[first + at] : answers[query++];
@@ -90,7 +111,7 @@ void read_pass(const ViewSet& set, Level level, bool reverse, const GpuCullConfi
         }
     }
     pass.queries = static_cast<std::uint32_t>(query);
-    pass.triangles_per_query = flags ? 0 : (level == Objects ? 0 : config.triangles_per_query);
+    pass.triangles_per_query = flags ? 0 : (level == Objects ? 0 : plan.triangles_per_query);
 }
 
 std::uint32_t pcs_size(const std::vector<PcsObject>& pcs, Level level) {
@@ -104,33 +125,34 @@ std::uint32_t pcs_size(const std::vector<PcsObject>& pcs, Level level) {
 // fewer than two objects remain (nothing left to collide with).
 void shrink(std::vector<PcsObject>& pcs, const ViewSet& set, Level level,
             const std::vector<std::uint8_t>& hidden_forward, const std::vector<std::uint8_t>& hidden_reverse) {
-    for (std::size_t k = 0; k < pcs.size(); ++k) {
-        const std::uint32_t first = set.first[k];
+    for (std::size_t slot = 0; slot < set.entry.size(); ++slot) {
+        PcsObject& entry = pcs[set.entry[slot]];
+        const std::uint32_t first = set.first[slot];
         std::vector<std::uint32_t> kept;
-        for (std::uint32_t i = 0; i < pcs[k].triangles.size(); ++i) {
+        for (std::uint32_t i = 0; i < entry.triangles.size(); ++i) {
             const bool keep = level == Objects ? (hidden_forward[first] || hidden_reverse[first])
                                                : (hidden_forward[first + i] || hidden_reverse[first + i]);
-            if (keep) kept.push_back(pcs[k].triangles[i]);
+            if (keep) kept.push_back(entry.triangles[i]);
         }
-        pcs[k].triangles = std::move(kept);
+        entry.triangles = std::move(kept);
     }
     std::erase_if(pcs, [](const PcsObject& entry) { return entry.triangles.empty(); });
     if (pcs.size() < 2) pcs.clear();
 }
 
-void cull_view(const Frame& frame, std::vector<PcsObject>& pcs, Level level, int axis, const GpuCullConfig& config,
+void cull_view(const Frame& frame, std::vector<PcsObject>& pcs, Level level, int axis, const CullPlan& plan,
                CullRenderer& renderer, GpuFrameInfo& info, CullTimes& times) {
     GpuViewInfo view_info{level, static_cast<std::uint8_t>(axis), pcs_size(pcs, level), 0};
     Stopwatch stopwatch;
-    const ViewSet set = make_view_set(frame, pcs, axis, config.resolution);
+    const ViewSet set = make_view_set(frame, pcs, axis, plan);
     renderer.begin_view(set.quads, set.view.width, set.view.height);
     std::vector<std::uint8_t> hidden[2];
     for (const bool reverse : {false, true}) {
         GpuPassInfo pass{level, static_cast<std::uint8_t>(axis), static_cast<std::uint8_t>(reverse)};
-        issue_pass(set, level, reverse, config, renderer, pass);
+        issue_pass(set, level, reverse, plan, renderer, pass);
         times.render += stopwatch.lap_ms();
         hidden[reverse].assign(set.quads.size(), 0);
-        read_pass(set, level, reverse, config, renderer, pass, hidden[reverse]);
+        read_pass(set, level, reverse, plan, renderer, pass, hidden[reverse]);
         times.readback += stopwatch.lap_ms();
         info.queries += pass.queries;
         info.passes.push_back(pass);
@@ -142,16 +164,16 @@ void cull_view(const Frame& frame, std::vector<PcsObject>& pcs, Level level, int
 
 }  // namespace
 
-void cull_pcs(const Frame& frame, std::vector<PcsObject>& pcs, const GpuCullConfig& config,
+void cull_pcs(const Frame& frame, std::vector<PcsObject>& pcs, const CullPlan& plan,
               CullRenderer& renderer, GpuFrameInfo& info, CullTimes& times) {
     info.pcs_objects_in = static_cast<std::uint32_t>(pcs.size());
     info.pcs_triangles_in = pcs_size(pcs, Triangles);
     if (pcs.size() < 2) pcs.clear();
     for (const Level level : {Objects, Triangles}) {
-        if (level == Objects && !config.object_level) continue;
-        for (const int axis : config.views) {
+        if (level == Objects && !plan.object_level) continue;
+        for (const int axis : plan.views) {
             if (pcs.empty()) break;
-            cull_view(frame, pcs, level, axis, config, renderer, info, times);
+            cull_view(frame, pcs, level, axis, plan, renderer, info, times);
         }
     }
     info.pcs_objects_out = static_cast<std::uint32_t>(pcs.size());

@@ -24,6 +24,17 @@ struct PcsObject {
     std::vector<std::uint32_t> triangles;  ///< ascending
 };
 
+/// What one frame's cull does: the configuration with this frame's choices filled in (the
+/// views from the view configuration matrix, P from the triangles-per-query mechanism).
+struct CullPlan {
+    int resolution = 512;
+    std::vector<int> views = {2, 0, 1};   ///< axes, in order
+    std::uint32_t triangles_per_query = 1;
+    GpuCullVariant variant = GpuCullVariant::Queries;
+    bool object_level = true;
+    bool sort_objects = true;             ///< front to back along each view (thesis 4.2.2)
+};
+
 /// Milliseconds of the cull: issuing draws, and waiting for query results or flags.
 struct CullTimes {
     double render = 0;
@@ -33,7 +44,7 @@ struct CullTimes {
 /// Culls `pcs` (objects in ascending order, each with its candidate triangles) in place:
 /// objects and triangles that provably touch no other object's PCS triangle are removed;
 /// objects left with no triangle, or alone, are removed. Fills `info`.
-void cull_pcs(const Frame& frame, std::vector<PcsObject>& pcs, const GpuCullConfig& config,
+void cull_pcs(const Frame& frame, std::vector<PcsObject>& pcs, const CullPlan& plan,
               CullRenderer& renderer, GpuFrameInfo& info, CullTimes& times);
 
 }  // namespace collidescope::gpucull

@@ -21,6 +21,11 @@ constexpr MethodEntry k_methods[] = {
     {"brute", [](const PipelineConfig&) { return make_brute_method(); }},
     {"aabb", [](const PipelineConfig& config) { return make_aabb_method(config.aabb); }},
     {"gpu", [](const PipelineConfig& config) { return make_gpu_method(config.gpu); }},
+    {"gpu-naive", [](const PipelineConfig& config) {
+         GpuCullConfig naive = config.gpu;
+         naive.naive = true;
+         return make_gpu_method(naive);
+     }},
 };
 
 }  // namespace
