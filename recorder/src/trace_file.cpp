@@ -6,6 +6,7 @@
 #include "collidescope/stats.hpp"
 
 #include <ctime>
+#include <thread>
 
 namespace collidescope::recorder {
 namespace {
@@ -66,6 +67,7 @@ void TraceFile::write_metadata(const SessionInfo& session) {
     h5::write_attr(m_where, root, "method", session.method);
     h5::write_attr(m_where, root, "self_collision", std::int64_t{session.self_collision ? 1 : 0});
     h5::write_attr(m_where, root, "threads", std::int64_t{session.threads});
+    h5::write_attr(m_where, root, "hardware_threads", std::int64_t{std::thread::hardware_concurrency()});
     h5::write_attr(m_where, root, "frame_begin", std::int64_t{session.frame_begin});
     h5::write_attr(m_where, root, "frame_end", std::int64_t{session.frame_end});
     h5::write_attr(m_where, root, "depth", session.depth);
