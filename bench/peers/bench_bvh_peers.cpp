@@ -32,6 +32,13 @@ double ms_since(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+// The objects' topology revisions: a peer rebuilds from scratch when they change (fractures).
+std::vector<std::uint64_t> revisions(const Frame& frame) {
+    std::vector<std::uint64_t> out;
+    for (const ObjectFrame& object : frame.objects) out.push_back(object.topology->revision);
+    return out;
+}
+
 // ---- Embree: one scene per object, a user geometry whose primitives are the triangles.
 struct EmbreeObject {
     const ObjectFrame* mesh = nullptr;  // the current frame's object (bounds callback reads it)
@@ -69,12 +76,17 @@ class EmbreePeer {
 public:
     EmbreePeer() : m_device(rtcNewDevice(nullptr)) {}
     ~EmbreePeer() {
-        for (EmbreeObject& o : m_objects) rtcReleaseScene(o.scene);
+        release();
         rtcReleaseDevice(m_device);
     }
-    // Refit (or first build) for the frame, then collide every object pair.
+    // Refit (or first build, or rebuild after a topology change) for the frame, then collide
+    // every object pair.
     PairSet frame(const Frame& frame, std::span<const ObjectPair> object_pairs) {
-        if (m_objects.empty()) create(frame);
+        if (m_objects.empty() || revisions(frame) != m_revisions) {
+            release();
+            create(frame);
+            m_revisions = revisions(frame);
+        }
         for (std::size_t o = 0; o < m_objects.size(); ++o) {
             m_objects[o].mesh = &frame.objects[o];
             rtcCommitGeometry(m_objects[o].geometry);
@@ -93,6 +105,11 @@ public:
     }
 
 private:
+    void release() {
+        for (EmbreeObject& o : m_objects) rtcReleaseScene(o.scene);
+        m_objects.clear();
+    }
+
     void create(const Frame& frame) {
         m_objects.resize(frame.objects.size());
         for (std::size_t o = 0; o < frame.objects.size(); ++o) {
@@ -112,13 +129,19 @@ private:
 
     RTCDevice m_device;
     std::vector<EmbreeObject> m_objects;
+    std::vector<std::uint64_t> m_revisions;
 };
 
 // ---- FCL: one BVHModel<AABB> per object, refit bottom-up every frame.
 class FclPeer {
 public:
     PairSet frame(const Frame& frame, std::span<const ObjectPair> object_pairs) {
-        if (m_models.empty()) create(frame);
+        if (m_models.empty() || revisions(frame) != m_revisions) {
+            m_models.clear();
+            m_objects.clear();
+            create(frame);
+            m_revisions = revisions(frame);
+        }
         for (std::size_t o = 0; o < m_models.size(); ++o) {
             m_models[o]->beginUpdateModel();
             m_models[o]->updateSubModel(points(frame.objects[o]));
@@ -163,6 +186,7 @@ private:
 
     std::vector<std::shared_ptr<Model>> m_models;
     std::vector<std::unique_ptr<fcl::CollisionObjectd>> m_objects;
+    std::vector<std::uint64_t> m_revisions;
 };
 
 // Pairs in `got` not in `exact` (extra) and in `exact` not in `got` (missed).
