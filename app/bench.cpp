@@ -38,13 +38,14 @@ std::string with_preset(const std::string& scene, const std::string& preset) {
     return scene.find(':') == std::string::npos ? scene + ":" + preset : scene;
 }
 
-// The methods to run on `scene`: those asked for, or every method, except that brute (quadratic)
-// runs by default only on small presets.
+// The methods to run on `scene`: those asked for, or every method, except that the references
+// (brute: quadratic; gpu-naive: one occlusion query per triangle) run by default only on small
+// presets.
 std::vector<std::string> methods_for(const BenchOptions& options, const Scene& scene) {
     if (!options.methods.empty()) return options.methods;
     std::vector<std::string> methods;
     for (const std::string& method : method_names()) {
-        if (method == "brute" && scene.preset != "small") continue;
+        if ((method == "brute" || method == "gpu-naive") && scene.preset != "small") continue;
         methods.push_back(method);
     }
     return methods;
@@ -95,7 +96,7 @@ int run_bench(const BenchOptions& options) {
     for (std::size_t i = 0; i < scenes.size(); ++i) {
         if (plans[i].methods.empty()) {
             progress.log("scene " + scenes[i].name + ":" + scenes[i].preset +
-                         ": no method to run (brute runs only on small presets unless --methods names it)");
+                         ": no method to run (brute and gpu-naive run only on small presets unless --methods names them)");
             continue;
         }
         results.push_back(run_bench_scene(scenes[i], plans[i], [&] { progress.advance(); }));
@@ -144,7 +145,7 @@ Command add_bench_command(CLI::App& app) {
     command->add_option("--preset", options->preset, "Preset for scenes named without one (small, default, large)")
         ->capture_default_str();
     command->add_option("--methods", options->methods,
-                        "Methods to compare (default: all; brute only on small presets unless named)")
+                        "Methods to compare (default: all; brute and gpu-naive only on small presets unless named)")
         ->delimiter(',')
         ->check(CLI::IsMember(method_names()));
     command->add_option("--repeat", options->repeat, "Runs per method; each frame reports the median")

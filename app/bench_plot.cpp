@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <vector>
 #include <sstream>
 
 namespace collidescope::app {
@@ -38,15 +40,30 @@ std::string number(double value) {
     return text;
 }
 
+// Data ranges: frames x0..x1; time 0..y1 (linear) or y0..y1 in decades (logarithmic, when
+// the methods differ by more than 30x, so the fast ones do not vanish on the zero line).
 struct Axes {
-    double x0, x1, y1;  // data ranges: frames x0..x1, time 0..y1
+    double x0, x1, y0, y1;
+    bool log;
     double px(double x) const { return k_left + (x1 > x0 ? (x - x0) / (x1 - x0) : 0.5) * (k_width - k_left - k_right); }
-    double py(double y) const { return k_height - k_bottom - y / y1 * (k_height - k_top - k_bottom); }
+    double py(double y) const {
+        const double t = log ? (std::log10(std::max(y, y0)) - std::log10(y0)) / (std::log10(y1) - std::log10(y0)) : y / y1;
+        return k_height - k_bottom - t * (k_height - k_top - k_bottom);
+    }
+    std::vector<double> y_ticks(double step) const {
+        std::vector<double> ticks;
+        if (log) {
+            for (double y = y0; y <= y1 * 1.0001; y *= 10) ticks.push_back(y);
+        } else {
+            for (double y = 0; y <= y1 * (1 + 1e-9); y += step) ticks.push_back(y);
+        }
+        return ticks;
+    }
 };
 
 void draw_axes(std::ostringstream& svg, const Axes& axes, double y_step, double x_step) {
     svg << "<g font-size=\"12\" fill=\"#333\">\n";
-    for (double y = 0; y <= axes.y1 + 1e-9 * axes.y1; y += y_step) {
+    for (const double y : axes.y_ticks(y_step)) {
         svg << "<line x1=\"" << k_left << "\" x2=\"" << k_width - k_right << "\" y1=\"" << axes.py(y)
             << "\" y2=\"" << axes.py(y) << "\" stroke=\"#ddd\"/>\n<text x=\"" << k_left - 6 << "\" y=\""
             << axes.py(y) + 4 << "\" text-anchor=\"end\">" << number(y) << "</text>\n";
@@ -60,7 +77,8 @@ void draw_axes(std::ostringstream& svg, const Axes& axes, double y_step, double 
         << k_width - k_right << "\" y1=\"" << k_height - k_bottom << "\" y2=\"" << k_height - k_bottom
         << "\" stroke=\"#333\"/>\n<text x=\"" << (k_left + k_width - k_right) / 2 << "\" y=\""
         << k_height - 12 << "\" text-anchor=\"middle\">frame</text>\n<text transform=\"translate(16,"
-        << (k_top + k_height - k_bottom) / 2 << ") rotate(-90)\" text-anchor=\"middle\">time per frame (ms)</text>\n</g>\n";
+        << (k_top + k_height - k_bottom) / 2 << ") rotate(-90)\" text-anchor=\"middle\">time per frame (ms"
+        << (axes.log ? ", log scale" : "") << ")</text>\n</g>\n";
 }
 
 void draw_series(std::ostringstream& svg, const Axes& axes, const BenchScene& scene) {
@@ -82,15 +100,19 @@ void draw_series(std::ostringstream& svg, const Axes& axes, const BenchScene& sc
 }  // namespace
 
 std::string plot_svg(const BenchScene& scene) {
-    double x0 = 0, x1 = 0, y_max = 0;
+    double x0 = 0, x1 = 0, y_max = 0, y_min = std::numeric_limits<double>::infinity();
     if (!scene.frames.empty()) x0 = x1 = scene.frames.front().frame;
     for (const BenchFrame& frame : scene.frames) {
         x0 = std::min<double>(x0, frame.frame);
         x1 = std::max<double>(x1, frame.frame);
         y_max = std::max(y_max, frame.total_ms());
+        if (frame.total_ms() > 0) y_min = std::min(y_min, frame.total_ms());
     }
     const double y_step = nice_step(y_max, 5);
-    const Axes axes{x0, x1, std::max(y_step, std::ceil(y_max / y_step) * y_step)};
+    const bool log = y_max > 0 && y_min < y_max / 30;
+    const Axes axes{x0, x1, log ? std::pow(10.0, std::floor(std::log10(y_min))) : 0,
+                    log ? std::pow(10.0, std::ceil(std::log10(y_max))) : std::max(y_step, std::ceil(y_max / y_step) * y_step),
+                    log};
 
     std::ostringstream svg;
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << k_width << "\" height=\"" << k_height
