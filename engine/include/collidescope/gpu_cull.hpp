@@ -17,7 +17,9 @@ enum class GpuCullVariant {
 
 /// Options of the GPU cull. The thesis's three mechanisms (4.2) are each switchable.
 struct GpuCullConfig {
-    int resolution = 512;                 ///< width and height of each view's depth buffer, pixels
+    /// Width and height of each view's depth buffer, pixels. 256 under llvmpipe: on C:small,
+    /// 512 halves the PCS left again but costs 1.7x the time (docs/gpu_cull.md).
+    int resolution = 256;
     /// View axes in the order used (0 = x, 1 = y, 2 = z); with `view_matrix` only their number
     /// counts (the matrix picks the axes).
     std::vector<int> views = {2, 0, 1};

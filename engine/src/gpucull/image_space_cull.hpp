@@ -27,7 +27,7 @@ struct PcsObject {
 /// What one frame's cull does: the configuration with this frame's choices filled in (the
 /// views from the view configuration matrix, P from the triangles-per-query mechanism).
 struct CullPlan {
-    int resolution = 512;
+    int resolution = 256;
     std::vector<int> views = {2, 0, 1};   ///< axes, in order
     std::uint32_t triangles_per_query = 1;
     GpuCullVariant variant = GpuCullVariant::Queries;
