@@ -41,14 +41,32 @@ std::string with_preset(const std::string& scene, const std::string& preset) {
 // The methods to run on `scene`: those asked for, or every method, except that the references
 // (brute: quadratic; gpu-naive: one occlusion query per triangle) run by default only on small
 // presets.
-std::vector<std::string> methods_for(const BenchOptions& options, const Scene& scene) {
+std::vector<std::string> methods_for(const BenchOptions& options, const Scene& scene,
+                                     const std::vector<std::string>& available) {
     if (!options.methods.empty()) return options.methods;
     std::vector<std::string> methods;
-    for (const std::string& method : method_names()) {
+    for (const std::string& method : available) {
         if ((method == "brute" || method == "gpu-naive") && scene.preset != "small") continue;
         methods.push_back(method);
     }
     return methods;
+}
+
+// Every method this machine can run; the others are skipped with their reason (a method named
+// with --methods is not skipped: it fails the run with its reason).
+std::vector<std::string> available_methods(const BenchOptions& options, Progress& progress) {
+    std::vector<std::string> available;
+    for (const std::string& method : method_names()) {
+        try {
+            PipelineConfig config;
+            config.gpu = gpu_config(options.gpu);
+            make_method(method, config);
+            available.push_back(method);
+        } catch (const UnavailableError& error) {
+            progress.log("skipping method " + method + ": " + error.what());
+        }
+    }
+    return available;
 }
 
 std::string settings_line(const BenchOptions& options) {
@@ -79,13 +97,16 @@ int run_bench(const BenchOptions& options) {
     std::filesystem::create_directories(directory, error);
     if (error) throw InputError(directory.string() + ": cannot create the output folder: " + error.message());
 
+    Progress setup(0);
+    const std::vector<std::string> available =
+        options.methods.empty() ? available_methods(options, setup) : options.methods;
     std::vector<Scene> scenes;
     std::vector<BenchPlan> plans;
     std::uint64_t steps = 0;
     for (const std::string& name : options.scenes) {
         Scene scene = make_builtin_scene(with_preset(name, options.preset));
         const FrameRange range = parse_frame_range(options.frames, scene.source->frame_count());
-        plans.push_back({methods_for(options, scene), range.begin, range.end, options.repeat,
+        plans.push_back({methods_for(options, scene, available), range.begin, range.end, options.repeat,
                          options.threads, scene.self_collision, gpu_config(options.gpu)});
         steps += std::uint64_t{range.end - range.begin} * static_cast<std::uint64_t>(options.repeat);
         scenes.push_back(std::move(scene));
