@@ -11,6 +11,12 @@
 
 namespace collidescope::recorder {
 
+namespace {
+
+constexpr unsigned k_swmr_read_attempts = 8;
+
+}  // namespace
+
 void Recording::Impl::open_file() {
     h5::silence();
     const std::string& path = where.file();
@@ -21,7 +27,12 @@ void Recording::Impl::open_file() {
     }
     // SWMR read opens a file still being written or left by a killed writer; files in older
     // formats refuse it and open plainly.
-    hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, H5P_DEFAULT);
+    // A SWMR reader retries a metadata read whose checksum fails (a writer may be mid-flush),
+    // 100 times by default with growing sleeps: minutes on a corrupt file. A few retries
+    // cover a live writer's flush.
+    const h5::Id fapl = where.own(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create a property list");
+    where.check(H5Pset_metadata_read_attempts(fapl.get(), k_swmr_read_attempts), "cannot set read attempts");
+    hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, fapl.get());
     if (id < 0) id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     file = where.own(id, H5Fclose, "cannot open the HDF5 file (corrupt or truncated?)");
 }
