@@ -1,6 +1,8 @@
 // `collidescope record`: runs a scene's frames through a method and writes the session trace
 // to one HDF5 file (recorder/, docs/recording.md).
 
+#include "aabb_options.hpp"
+#include "gpu_options.hpp"
 #include "commands.hpp"
 #include "frame_range.hpp"
 #include "progress.hpp"
@@ -33,6 +35,8 @@ struct RecordOptions {
     int compression = 1;            ///< gzip level of positions, pairs, triangles (0 = none)
     int writer_nice = 10;           ///< nice increment of the writer thread (0 = none)
     bool quiet = false;
+    GpuOptions gpu;                 ///< --gpu-* (methods gpu, gpu-naive)
+    AabbCliOptions aabb;            ///< --aabb-* (method aabb)
 };
 
 constexpr const char* k_footer = R"(Writes one HDF5 file (schema: docs/recording.md; read it with h5py, h5dump,
@@ -102,6 +106,8 @@ int run_record(const RecordOptions& options) {
     config.method = options.method;
     config.self_collision = resolve_self_collision(options.self, options.no_self, scene);
     config.threads = options.threads;
+    config.gpu = gpu_config(options.gpu);
+    config.aabb = aabb_options(options.aabb);
     Pipeline pipeline(config);
     Frame frame = scene.source->frame(range.begin);
 
@@ -166,6 +172,8 @@ Command add_record_command(CLI::App& app) {
                        "gzip level (with shuffle) of positions, pairs and triangles; 0 = uncompressed")
         ->check(CLI::Range(0, 9))
         ->capture_default_str();
+    add_gpu_options(*record, options->gpu);
+    add_aabb_options(*record, options->aabb);
     record->add_option("--writer-nice", options->writer_nice, "Nice increment of the writer thread (0 = same priority)")
         ->check(CLI::Range(0, 19))
         ->capture_default_str();

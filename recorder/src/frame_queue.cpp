@@ -6,7 +6,8 @@ namespace collidescope::recorder {
 
 std::size_t FrameRecord::bytes() const {
     std::size_t total = sizeof(FrameRecord) + ms.size() * sizeof(double) + counts.size() * sizeof(std::uint64_t) +
-                        pairs.size() * sizeof(TrianglePair);
+                        pairs.size() * sizeof(TrianglePair) + (gpu.size() + aabb.size()) * sizeof(double) +
+                        gpu_passes.size() * sizeof(std::uint64_t);
     for (const ObjectRecord& object : objects) {
         total += sizeof(ObjectRecord) + object.positions.size() * sizeof(float);
         // A new topology is shared with the engine, but the writer keeps it alive: count it.

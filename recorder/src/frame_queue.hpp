@@ -29,6 +29,11 @@ struct FrameRecord {
     std::vector<std::uint64_t> counts;    ///< for_each_count order
     std::vector<TrianglePair> pairs;
     std::vector<ObjectRecord> objects;
+    bool has_gpu = false;                 ///< stats.gpu was set
+    std::vector<double> gpu;              ///< for_each_gpu_value order (zeros without)
+    std::vector<std::uint64_t> gpu_passes;  ///< for_each_pass_field order, row after row
+    bool has_aabb = false;                ///< stats.aabb was set
+    std::vector<double> aabb;             ///< for_each_aabb_value order (zeros without)
 
     /// Bytes held (what the queue's cap counts).
     std::size_t bytes() const;

@@ -130,6 +130,23 @@ void Recorder::State::rethrow_writer_error() {
     if (error) std::rethrow_exception(error);
 }
 
+namespace {
+
+// The methods' own details (schema 1.1): zeros and present = 0 when a method has none.
+void copy_details(const FrameStats& stats, FrameRecord& record) {
+    record.has_gpu = stats.gpu.has_value();
+    for_each_gpu_value(stats.gpu.value_or(GpuFrameInfo{}), [&](const char*, double v, const char*) { record.gpu.push_back(v); });
+    if (stats.gpu) {
+        for (const GpuPassInfo& pass : stats.gpu->passes) {
+            for_each_pass_field(pass, [&](const char*, std::uint64_t v) { record.gpu_passes.push_back(v); });
+        }
+    }
+    record.has_aabb = stats.aabb.has_value();
+    for_each_aabb_value(stats.aabb.value_or(AabbFrameInfo{}), [&](const char*, double v, const char*) { record.aabb.push_back(v); });
+}
+
+}  // namespace
+
 FrameRecord Recorder::State::copy(const FrameReport& report) {
     FrameRecord record;
     record.frame = report.frame.index;
@@ -139,6 +156,7 @@ FrameRecord Recorder::State::copy(const FrameReport& report) {
     for_each_stage(report.stats.ms, [&](const char*, double value) { record.ms.push_back(value); });
     for_each_count(report.stats.counts, [&](const char*, std::uint64_t value) { record.counts.push_back(value); });
     record.pairs.assign(report.colliding_pairs.begin(), report.colliding_pairs.end());
+    copy_details(report.stats, record);
     if (first) revisions.assign(report.frame.objects.size(), 0);
     for (std::size_t k = 0; k < report.frame.objects.size(); ++k) {
         const ObjectFrame& object = report.frame.objects[k];

@@ -42,6 +42,7 @@ TraceFile::TraceFile(const std::filesystem::path& path, const SessionInfo& sessi
                          "cannot create the recording (is the directory writable?)");
     write_metadata(session);
     create_frames(methods);
+    create_details();
     create_objects(session, first, deflate_level);
     m_where.check(H5Fstart_swmr_write(m_file.get()), "cannot start SWMR writing");
 }
@@ -100,6 +101,44 @@ void TraceFile::create_frames(std::span<const std::string> methods) {
     m_pair_offsets = make_column(schema::k_pair_offsets, {H5T_STD_U64LE, 1, k_frame_chunk, 0, schema::k_unit_none});
     const std::uint64_t zero = 0;
     append_value(m_pair_offsets, H5T_NATIVE_UINT64, &zero);
+}
+
+void TraceFile::create_details() {
+    h5::create_group(m_where, m_file.get(), schema::k_frame_gpu);
+    const std::string gpu = schema::k_frame_gpu;
+    m_gpu_present = make_column(gpu + "/" + schema::k_present, {H5T_STD_U8LE, 1, k_frame_chunk, 0, schema::k_unit_none});
+    for_each_gpu_value(GpuFrameInfo{}, [&](const char* name, double, const char* unit) {
+        m_gpu.push_back(make_column(gpu + "/" + name, {H5T_IEEE_F64LE, 1, k_frame_chunk, 0, unit}));
+    });
+    h5::create_group(m_where, m_file.get(), schema::k_frame_aabb);
+    const std::string aabb = schema::k_frame_aabb;
+    m_aabb_present = make_column(aabb + "/" + schema::k_present, {H5T_STD_U8LE, 1, k_frame_chunk, 0, schema::k_unit_none});
+    for_each_aabb_value(AabbFrameInfo{}, [&](const char* name, double, const char* unit) {
+        m_aabb.push_back(make_column(aabb + "/" + name, {H5T_IEEE_F64LE, 1, k_frame_chunk, 0, unit}));
+    });
+    h5::create_group(m_where, m_file.get(), schema::k_gpu);
+    std::size_t fields = 0;
+    for_each_pass_field(GpuPassInfo{}, [&](const char*, std::uint64_t) { ++fields; });
+    m_gpu_passes = make_column(schema::k_gpu_passes, {H5T_STD_U64LE, fields, k_frame_chunk, 0, schema::k_unit_none});
+    m_gpu_pass_offsets = make_column(schema::k_gpu_pass_offsets, {H5T_STD_U64LE, 1, k_frame_chunk, 0, schema::k_unit_none});
+    const std::uint64_t zero = 0;
+    append_value(m_gpu_pass_offsets, H5T_NATIVE_UINT64, &zero);
+}
+
+void TraceFile::append_details(const FrameRecord& record) {
+    const std::uint8_t gpu_present = record.has_gpu ? 1 : 0;
+    const std::uint8_t aabb_present = record.has_aabb ? 1 : 0;
+    append_value(m_gpu_present, H5T_NATIVE_UINT8, &gpu_present);
+    for (std::size_t i = 0; i < m_gpu.size(); ++i) append_value(m_gpu[i], H5T_NATIVE_DOUBLE, &record.gpu[i]);
+    append_value(m_aabb_present, H5T_NATIVE_UINT8, &aabb_present);
+    for (std::size_t i = 0; i < m_aabb.size(); ++i) append_value(m_aabb[i], H5T_NATIVE_DOUBLE, &record.aabb[i]);
+    const hsize_t fields = 8;
+    if (!record.gpu_passes.empty()) {
+        h5::append_rows(m_where, m_gpu_passes.dataset.get(), m_gpu_passes.path, m_gpu_passes.length, H5T_NATIVE_UINT64,
+                        record.gpu_passes.size() / fields, record.gpu_passes.data());
+    }
+    const std::uint64_t end = m_gpu_passes.length;
+    append_value(m_gpu_pass_offsets, H5T_NATIVE_UINT64, &end);
 }
 
 void TraceFile::create_objects(const SessionInfo& session, const Frame& first, int deflate_level) {
@@ -173,6 +212,7 @@ void TraceFile::append(const FrameRecord& record, bool keep_positions) {
     for (std::size_t s = 0; s < m_ms.size(); ++s) append_value(m_ms[s], H5T_NATIVE_DOUBLE, &record.ms[s]);
     for (std::size_t c = 0; c < m_counts.size(); ++c) append_value(m_counts[c], H5T_NATIVE_UINT64, &record.counts[c]);
     append_value(m_method, m_method_type.get(), &record.method);
+    append_details(record);
     // The frame index last: a reader counts a frame complete when every dataset has its row.
     append_value(m_index, H5T_NATIVE_UINT32, &record.frame);
     m_where.check(H5Fflush(m_file.get(), H5F_SCOPE_LOCAL), "cannot flush frame " + std::to_string(record.frame));

@@ -47,6 +47,8 @@ private:
     Column make_column(const std::string& path, const h5::ExtensibleSpec& spec, hid_t loc = -1);
     void write_metadata(const SessionInfo& session);
     void create_frames(std::span<const std::string> methods);
+    void create_details();
+    void append_details(const FrameRecord& record);
     void create_objects(const SessionInfo& session, const Frame& first, int deflate_level);
     void append_topology(ObjectColumns& columns, const Topology& topology, std::uint32_t frame);
     void append_value(Column& column, hid_t mem_type, const void* value);
@@ -56,6 +58,8 @@ private:
     h5::Id m_method_type;  ///< the enum of method names
     Column m_index, m_method, m_pairs, m_pair_offsets;
     std::vector<Column> m_ms, m_counts;
+    std::vector<Column> m_gpu, m_aabb;        ///< schema 1.1 details
+    Column m_gpu_present, m_aabb_present, m_gpu_passes, m_gpu_pass_offsets;
     std::vector<ObjectColumns> m_objects;
     int m_deflate;
 };

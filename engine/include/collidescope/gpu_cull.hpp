@@ -77,4 +77,42 @@ struct GpuFrameInfo {
     double rebuild_ms_per_triangle = 0;   ///< R: final-step milliseconds per surviving triangle
 };
 
+/// Calls `visit(name, value, unit)` for every per-frame scalar of the GPU cull's trace, in a
+/// fixed order (the recorder stores one dataset per name; docs/recording.md lists them).
+template <class Visitor>
+void for_each_gpu_value(const GpuFrameInfo& info, Visitor&& visit) {
+    visit("pcs_objects_in", double(info.pcs_objects_in), "1");
+    visit("pcs_objects_out", double(info.pcs_objects_out), "1");
+    visit("pcs_triangles_in", double(info.pcs_triangles_in), "1");
+    visit("pcs_triangles_out", double(info.pcs_triangles_out), "1");
+    visit("queries", double(info.queries), "1");
+    visit("triangles_per_query", double(info.triangles_per_query), "1");
+    visit("query_ms", info.query_ms, "ms");
+    visit("rebuild_ms_per_triangle", info.rebuild_ms_per_triangle, "ms");
+    static constexpr const char* k_matrix[3][3] = {{"view_matrix_0x", "view_matrix_0y", "view_matrix_0z"},
+                                                   {"view_matrix_1x", "view_matrix_1y", "view_matrix_1z"},
+                                                   {"view_matrix_2x", "view_matrix_2y", "view_matrix_2z"}};
+    for (std::size_t pass = 0; pass < 3; ++pass) {
+        for (std::size_t view = 0; view < 3; ++view) visit(k_matrix[pass][view], info.view_matrix[pass][view], "1");
+    }
+    static constexpr const char* k_chosen[3] = {"chosen_view_0", "chosen_view_1", "chosen_view_2"};
+    for (std::size_t pass = 0; pass < 3; ++pass) {  // axis 0/1/2, -1 when the pass did not run
+        visit(k_chosen[pass], pass < info.chosen_views.size() ? double(info.chosen_views[pass]) : -1.0, "1");
+    }
+}
+
+/// Calls `visit(name, value)` for every field of one cull pass, in a fixed order (the recorder
+/// stores passes as rows of this many columns).
+template <class Visitor>
+void for_each_pass_field(const GpuPassInfo& pass, Visitor&& visit) {
+    visit("level", std::uint64_t{pass.level});
+    visit("view", std::uint64_t{pass.view});
+    visit("reverse", std::uint64_t{pass.reverse});
+    visit("items_tested", std::uint64_t{pass.items_tested});
+    visit("items_hidden", std::uint64_t{pass.items_hidden});
+    visit("queries", std::uint64_t{pass.queries});
+    visit("samples_passed", pass.samples_passed);
+    visit("triangles_per_query", std::uint64_t{pass.triangles_per_query});
+}
+
 }  // namespace collidescope

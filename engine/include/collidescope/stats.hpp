@@ -107,6 +107,17 @@ inline std::string rebuild_reason_names(std::uint8_t reasons) {
     return names;
 }
 
+/// Calls `visit(name, value, unit)` for every AabbFrameInfo field, in a fixed order (the
+/// recorder stores one dataset per name).
+template <class Visitor>
+void for_each_aabb_value(const AabbFrameInfo& info, Visitor&& visit) {
+    visit("rebuild_reasons", double(info.rebuild_reasons), "1");
+    visit("rebuilt_objects", double(info.rebuilt_objects), "1");
+    visit("background_started", double(info.background_started), "1");
+    visit("background_swaps", double(info.background_swaps), "1");
+    visit("tree_quality", info.tree_quality, "1");
+}
+
 /// Everything one frame reports.
 struct FrameStats {
     std::uint32_t frame = 0;

@@ -17,7 +17,7 @@ inline constexpr const char* k_schema_name = "collidescope-trace";
 /// Major: readers refuse files with a newer major (layout changed incompatibly). Minor: only
 /// additions (new datasets or attributes); older readers ignore what they do not know.
 inline constexpr std::int64_t k_version_major = 1;
-inline constexpr std::int64_t k_version_minor = 0;
+inline constexpr std::int64_t k_version_minor = 1;  ///< 1.1: /frames/gpu, /frames/aabb, /gpu
 
 // Root attributes.
 inline constexpr const char* k_attr_schema = "schema";
@@ -37,6 +37,16 @@ inline constexpr const char* k_frame_index = "/frames/index";    ///< uint32, sc
 inline constexpr const char* k_frame_method = "/frames/method";  ///< enum (uint8) of method names
 inline constexpr const char* k_frame_ms = "/frames/ms";          ///< group: float64 per stage
 inline constexpr const char* k_frame_counts = "/frames/counts";  ///< group: uint64 per count
+/// Group: float64 per GpuFrameInfo scalar (for_each_gpu_value), plus uint8 `present` (1 when
+/// the frame's method ran the GPU cull; the other columns are 0 otherwise). Schema 1.1.
+inline constexpr const char* k_frame_gpu = "/frames/gpu";
+/// Group: float64 per AabbFrameInfo field (for_each_aabb_value), plus uint8 `present`. 1.1.
+inline constexpr const char* k_frame_aabb = "/frames/aabb";
+inline constexpr const char* k_present = "present";
+inline constexpr const char* k_gpu = "/gpu";
+/// (N, 8) uint64: one row per cull pass (for_each_pass_field order). 1.1.
+inline constexpr const char* k_gpu_passes = "/gpu/passes";
+inline constexpr const char* k_gpu_pass_offsets = "/gpu/pass_offsets";  ///< (F + 1) uint64
 inline constexpr const char* k_collisions = "/collisions";
 inline constexpr const char* k_pairs = "/collisions/pairs";           ///< (P, 4) uint32
 inline constexpr const char* k_pair_offsets = "/collisions/offsets";  ///< (F + 1) uint64
