@@ -2,6 +2,7 @@
 // frames.csv, summary.csv, a printed table, a plot per scene and an index.html; and the check
 // that every method returned exactly the same pairs on every frame.
 
+#include "aabb_options.hpp"
 #include "bench_report.hpp"
 #include "bench_run.hpp"
 #include "commands.hpp"
@@ -32,6 +33,7 @@ struct BenchOptions {
     std::string frames;                ///< "" = every frame of every scene
     std::string output;
     GpuOptions gpu;
+    AabbCliOptions aabb;
 };
 
 std::string with_preset(const std::string& scene, const std::string& preset) {
@@ -107,7 +109,8 @@ int run_bench(const BenchOptions& options) {
         Scene scene = make_builtin_scene(with_preset(name, options.preset));
         const FrameRange range = parse_frame_range(options.frames, scene.source->frame_count());
         plans.push_back({methods_for(options, scene, available), range.begin, range.end, options.repeat,
-                         options.threads, scene.self_collision, gpu_config(options.gpu)});
+                         options.threads, scene.self_collision, gpu_config(options.gpu),
+                         aabb_options(options.aabb)});
         steps += std::uint64_t{range.end - range.begin} * static_cast<std::uint64_t>(options.repeat);
         scenes.push_back(std::move(scene));
     }
@@ -181,6 +184,7 @@ Command add_bench_command(CLI::App& app) {
         ->type_name("DIR")
         ->required();
     add_gpu_options(*command, options->gpu);
+    add_aabb_options(*command, options->aabb);
     return {command, [options] { return run_bench(*options); }};
 }
 

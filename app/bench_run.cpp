@@ -71,6 +71,7 @@ BenchScene run_bench_scene(const Scene& scene, const BenchPlan& plan,
             config.self_collision = plan.self_collision;
             config.threads = plan.threads;
             config.gpu = plan.gpu;
+            config.aabb = plan.aabb;
             pipelines.push_back(std::make_unique<Pipeline>(config));
         }
         for (std::uint32_t f = 0; f < frames; ++f) {

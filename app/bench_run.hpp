@@ -3,6 +3,7 @@
 // animation run `repeat` times with fresh pipelines, and every frame's pairs checked to be the
 // same for all methods.
 
+#include "collidescope/aabb_options.hpp"
 #include "collidescope/gpu_cull.hpp"
 #include "collidescope/scene.hpp"
 #include "collidescope/types.hpp"
@@ -23,6 +24,7 @@ struct BenchPlan {
     int threads = 0;                   ///< worker threads, 0 = all hardware threads
     bool self_collision = false;
     GpuCullConfig gpu;                 ///< options of the GPU cull methods
+    AabbOptions aabb;                  ///< options of the AABB hierarchies
 };
 
 /// One method on one frame: per-stage milliseconds (median over the repeats, in
