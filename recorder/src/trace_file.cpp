@@ -12,6 +12,9 @@ namespace collidescope::recorder {
 namespace {
 
 constexpr hsize_t k_frame_chunk = 256;       // rows per chunk of 1-D per-frame datasets (2 KiB)
+// The methods' details (schema 1.1) are many small columns, most of them zeros for a given
+// method: small chunks keep their first allocation from dominating a short recording's size.
+constexpr hsize_t k_detail_chunk = 32;
 constexpr hsize_t k_pair_chunk = 8192;       // pairs per chunk (128 KiB)
 constexpr hsize_t k_max_chunk_rows = 1u << 20;
 
@@ -106,21 +109,21 @@ void TraceFile::create_frames(std::span<const std::string> methods) {
 void TraceFile::create_details() {
     h5::create_group(m_where, m_file.get(), schema::k_frame_gpu);
     const std::string gpu = schema::k_frame_gpu;
-    m_gpu_present = make_column(gpu + "/" + schema::k_present, {H5T_STD_U8LE, 1, k_frame_chunk, 0, schema::k_unit_none});
+    m_gpu_present = make_column(gpu + "/" + schema::k_present, {H5T_STD_U8LE, 1, k_detail_chunk, 0, schema::k_unit_none});
     for_each_gpu_value(GpuFrameInfo{}, [&](const char* name, double, const char* unit) {
-        m_gpu.push_back(make_column(gpu + "/" + name, {H5T_IEEE_F64LE, 1, k_frame_chunk, 0, unit}));
+        m_gpu.push_back(make_column(gpu + "/" + name, {H5T_IEEE_F64LE, 1, k_detail_chunk, 0, unit}));
     });
     h5::create_group(m_where, m_file.get(), schema::k_frame_aabb);
     const std::string aabb = schema::k_frame_aabb;
-    m_aabb_present = make_column(aabb + "/" + schema::k_present, {H5T_STD_U8LE, 1, k_frame_chunk, 0, schema::k_unit_none});
+    m_aabb_present = make_column(aabb + "/" + schema::k_present, {H5T_STD_U8LE, 1, k_detail_chunk, 0, schema::k_unit_none});
     for_each_aabb_value(AabbFrameInfo{}, [&](const char* name, double, const char* unit) {
-        m_aabb.push_back(make_column(aabb + "/" + name, {H5T_IEEE_F64LE, 1, k_frame_chunk, 0, unit}));
+        m_aabb.push_back(make_column(aabb + "/" + name, {H5T_IEEE_F64LE, 1, k_detail_chunk, 0, unit}));
     });
     h5::create_group(m_where, m_file.get(), schema::k_gpu);
     std::size_t fields = 0;
     for_each_pass_field(GpuPassInfo{}, [&](const char*, std::uint64_t) { ++fields; });
-    m_gpu_passes = make_column(schema::k_gpu_passes, {H5T_STD_U64LE, fields, k_frame_chunk, 0, schema::k_unit_none});
-    m_gpu_pass_offsets = make_column(schema::k_gpu_pass_offsets, {H5T_STD_U64LE, 1, k_frame_chunk, 0, schema::k_unit_none});
+    m_gpu_passes = make_column(schema::k_gpu_passes, {H5T_STD_U64LE, fields, k_detail_chunk, 0, schema::k_unit_none});
+    m_gpu_pass_offsets = make_column(schema::k_gpu_pass_offsets, {H5T_STD_U64LE, 1, k_detail_chunk, 0, schema::k_unit_none});
     const std::uint64_t zero = 0;
     append_value(m_gpu_pass_offsets, H5T_NATIVE_UINT64, &zero);
 }
