@@ -1,11 +1,10 @@
 // `collidescope check`: runs a scene's frames through a method and reports the colliding
 // triangle pairs (summary on stderr, --pairs TSV, --stats JSON Lines, exit code).
 
-#include "aabb_options.hpp"
 #include "check_sinks.hpp"
 #include "commands.hpp"
+#include "engine_options.hpp"
 #include "frame_range.hpp"
-#include "gpu_options.hpp"
 #include "output_stream.hpp"
 #include "progress.hpp"
 #include "scene_input.hpp"
@@ -23,17 +22,12 @@ namespace {
 struct CheckOptions {
     std::vector<std::string> inputs;
     std::string scene;            ///< built-in scene NAME[:PRESET], instead of inputs
-    std::string method = "brute";
-    bool self = false;            ///< force self-collision on
-    bool no_self = false;         ///< force self-collision off
     std::string frames;           ///< "" = every frame
-    int threads = 0;              ///< 0 = all hardware threads
     std::string pairs;            ///< TSV output ("" = none, "-" = stdout)
     std::string stats;            ///< JSON Lines output ("" = none, "-" = stdout)
     bool exit_zero = false;
     bool quiet = false;
-    GpuOptions gpu;
-    AabbCliOptions aabb;
+    EngineOptions engine;           ///< --method, --self, --threads, --gpu-*, --aabb-*
 };
 
 constexpr const char* k_footer = R"(Frames (--frames) are numbered from 0 in scene order and the range is half-open:
@@ -62,12 +56,7 @@ int run_check(const CheckOptions& options) {
     }
     const Scene scene = open_scene(options.inputs, options.scene);
     const FrameRange range = parse_frame_range(options.frames, scene.source->frame_count());
-    PipelineConfig config;
-    config.method = options.method;
-    config.self_collision = resolve_self_collision(options.self, options.no_self, scene);
-    config.threads = options.threads;
-    config.gpu = gpu_config(options.gpu);
-    config.aabb = aabb_options(options.aabb);
+    const PipelineConfig config = pipeline_config(options.engine, scene);
     Pipeline pipeline(config);
 
     Progress progress(range.end - range.begin);
@@ -112,26 +101,15 @@ Command add_check_command(CLI::App& app) {
                       "A built-in scene instead of INPUT files: NAME[:PRESET] (" +
                           builtin_scene_list() + ")")
         ->type_name("NAME[:PRESET]");
-    check->add_option("--method", options->method, "Collision method")
-        ->check(CLI::IsMember(method_names()))
-        ->capture_default_str();
-    CLI::Option* self = check->add_flag("--self", options->self,
-                                        "Self-collision on (default: the scene's setting)");
-    check->add_flag("--no-self", options->no_self, "Self-collision off (default: the scene's setting)")
-        ->excludes(self);
     check->add_option("--frames", options->frames, "Frames to check: A:B (half-open), A:, :B or N")
         ->type_name("A:B");
-    check->add_option("--threads", options->threads, "Worker threads (0 = all hardware threads)")
-        ->check(CLI::NonNegativeNumber)
-        ->capture_default_str();
     check->add_option("--pairs", options->pairs, "Write the colliding pairs as TSV (- = stdout)")
         ->type_name("FILE");
     check->add_option("--stats", options->stats, "Write per-frame stats as JSON Lines (- = stdout)")
         ->type_name("FILE");
     check->add_flag("--exit-zero", options->exit_zero, "Exit 0 even when collisions are found");
     check->add_flag("-q,--quiet", options->quiet, "Only the total line on stderr, no per-frame lines");
-    add_gpu_options(*check, options->gpu);
-    add_aabb_options(*check, options->aabb);
+    add_engine_options(*check, options->engine);
     return {check, [options] { return run_check(*options); }};
 }
 

@@ -1,9 +1,8 @@
 // `collidescope record`: runs a scene's frames through a method and writes the session trace
 // to one HDF5 file (recorder/, docs/recording.md).
 
-#include "aabb_options.hpp"
-#include "gpu_options.hpp"
 #include "commands.hpp"
+#include "engine_options.hpp"
 #include "frame_range.hpp"
 #include "progress.hpp"
 #include "scene_input.hpp"
@@ -24,26 +23,21 @@ struct RecordOptions {
     std::vector<std::string> inputs;
     std::string scene;              ///< built-in scene NAME[:PRESET], instead of inputs
     std::string output;             ///< -o, the HDF5 file
-    std::string method = "brute";
-    bool self = false;
-    bool no_self = false;
     std::string frames;             ///< "" = every frame
-    int threads = 0;                ///< 0 = all hardware threads
     std::string depth = "off";      ///< off | every:N
     std::string budget;             ///< "" = no bound
     std::string queue = "256M";     ///< writer queue memory cap
     int compression = 1;            ///< gzip level of positions, pairs, triangles (0 = none)
     int writer_nice = 10;           ///< nice increment of the writer thread (0 = none)
     bool quiet = false;
-    GpuOptions gpu;                 ///< --gpu-* (methods gpu, gpu-naive)
-    AabbCliOptions aabb;            ///< --aabb-* (method aabb)
+    EngineOptions engine;           ///< --method, --self, --threads, --gpu-*, --aabb-*
 };
 
 constexpr const char* k_footer = R"(Writes one HDF5 file (schema: docs/recording.md; read it with h5py, h5dump,
 `collidescope inspect`, `validate`, `compare` or the scripts in scripts/). The file is written
 frame by frame in SWMR mode: a killed recording keeps every finished frame.
---depth every:N asks for the GPU cull's depth buffers every Nth frame; no method has a GPU cull
-yet (Mode 2 comes later), so there is nothing to record and the option is only stored.
+--depth every:N asks for the GPU cull's depth buffers every Nth frame; the cull does not report
+them yet, so the option is only stored (the cull's per-pass state is recorded: /frames/gpu, /gpu).
 --budget SIZE (e.g. 50M, 2G; K/M/G are powers of 1024) keeps the file near SIZE by dropping
 the vertex positions of more and more frames (depth buffers would go first); the summary
 says what was dropped.
@@ -102,12 +96,7 @@ int run_record(const RecordOptions& options) {
     const std::uint64_t budget = options.budget.empty() ? 0 : parse_size(options.budget, "--budget");
     const Scene scene = open_scene(options.inputs, options.scene);
     const FrameRange range = parse_frame_range(options.frames, scene.source->frame_count());
-    PipelineConfig config;
-    config.method = options.method;
-    config.self_collision = resolve_self_collision(options.self, options.no_self, scene);
-    config.threads = options.threads;
-    config.gpu = gpu_config(options.gpu);
-    config.aabb = aabb_options(options.aabb);
+    const PipelineConfig config = pipeline_config(options.engine, scene);
     Pipeline pipeline(config);
     Frame frame = scene.source->frame(range.begin);
 
@@ -152,16 +141,8 @@ Command add_record_command(CLI::App& app) {
     record->add_option("-o,--output", options->output, "The HDF5 file to write (replaced if it exists)")
         ->required()
         ->type_name("FILE");
-    record->add_option("--method", options->method, "Collision method")
-        ->check(CLI::IsMember(method_names()))
-        ->capture_default_str();
-    CLI::Option* self = record->add_flag("--self", options->self, "Self-collision on (default: the scene's setting)");
-    record->add_flag("--no-self", options->no_self, "Self-collision off (default: the scene's setting)")->excludes(self);
     record->add_option("--frames", options->frames, "Frames to record: A:B (half-open), A:, :B or N")->type_name("A:B");
-    record->add_option("--threads", options->threads, "Worker threads (0 = all hardware threads)")
-        ->check(CLI::NonNegativeNumber)
-        ->capture_default_str();
-    record->add_option("--depth", options->depth, "GPU cull depth buffers: off or every:N (none before Mode 2)")
+    record->add_option("--depth", options->depth, "GPU cull depth buffers: off or every:N (not reported by the cull yet)")
         ->capture_default_str();
     record->add_option("--budget", options->budget, "Bound the file size (decimates positions), e.g. 100M")
         ->type_name("SIZE");
@@ -172,8 +153,7 @@ Command add_record_command(CLI::App& app) {
                        "gzip level (with shuffle) of positions, pairs and triangles; 0 = uncompressed")
         ->check(CLI::Range(0, 9))
         ->capture_default_str();
-    add_gpu_options(*record, options->gpu);
-    add_aabb_options(*record, options->aabb);
+    add_engine_options(*record, options->engine);
     record->add_option("--writer-nice", options->writer_nice, "Nice increment of the writer thread (0 = same priority)")
         ->check(CLI::Range(0, 19))
         ->capture_default_str();

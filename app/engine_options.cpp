@@ -1,0 +1,32 @@
+// --method, --self, --no-self, --threads, --gpu-*, --aabb-* -> PipelineConfig.
+
+#include "engine_options.hpp"
+
+#include "scene_input.hpp"
+
+namespace collidescope::app {
+
+void add_engine_options(CLI::App& command, EngineOptions& options) {
+    command.add_option("--method", options.method, "Collision method")
+        ->check(CLI::IsMember(method_names()))
+        ->capture_default_str();
+    CLI::Option* self = command.add_flag("--self", options.self, "Self-collision on (default: the scene's setting)");
+    command.add_flag("--no-self", options.no_self, "Self-collision off (default: the scene's setting)")->excludes(self);
+    command.add_option("--threads", options.threads, "Worker threads (0 = all hardware threads)")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+    add_gpu_options(command, options.gpu);
+    add_aabb_options(command, options.aabb);
+}
+
+PipelineConfig pipeline_config(const EngineOptions& options, const Scene& scene) {
+    PipelineConfig config;
+    config.method = options.method;
+    config.self_collision = resolve_self_collision(options.self, options.no_self, scene);
+    config.threads = options.threads;
+    config.gpu = gpu_config(options.gpu);
+    config.aabb = aabb_options(options.aabb);
+    return config;
+}
+
+}  // namespace collidescope::app

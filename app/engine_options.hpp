@@ -1,0 +1,35 @@
+#pragma once
+// The options that choose and tune the engine, shared by the subcommands that run it (check,
+// record): --method, --self / --no-self, --threads, the GPU cull's --gpu-* and the AABB
+// hierarchies' --aabb-* options.
+
+#include "aabb_options.hpp"
+#include "gpu_options.hpp"
+
+#include "collidescope/pipeline.hpp"
+#include "collidescope/scene.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace collidescope::app {
+
+/// What the options hold as parsed.
+struct EngineOptions {
+    std::string method = "brute";
+    bool self = false;     ///< force self-collision on
+    bool no_self = false;  ///< force self-collision off
+    int threads = 0;       ///< 0 = all hardware threads
+    GpuOptions gpu;
+    AabbCliOptions aabb;
+};
+
+/// Adds the options to `command`, writing into `options` (which must outlive parsing).
+void add_engine_options(CLI::App& command, EngineOptions& options);
+
+/// The pipeline configuration the options describe for `scene` (whose setting decides
+/// self-collision unless --self or --no-self says otherwise).
+PipelineConfig pipeline_config(const EngineOptions& options, const Scene& scene);
+
+}  // namespace collidescope::app
