@@ -36,6 +36,24 @@ struct GpuCullConfig {
     /// (seeded), one triangle per query, no sort; the other mechanism switches are ignored.
     bool naive = false;
     std::uint64_t seed = 1;               ///< seeds the exploration and naive draws
+    /// Capture the depth buffers (GpuFrameInfo::depth_images) on frames whose index is a
+    /// multiple of this; 0: never (the default; a capture costs a read back per view).
+    std::uint32_t depth_every = 0;
+};
+
+/// One depth buffer of the cull, read back after the forward pass of a view at the triangle
+/// level: the nearest depth of every PCS triangle drawn in that view.
+struct GpuDepthImage {
+    std::uint8_t level = 1;  ///< 0 objects, 1 triangles
+    std::uint8_t view = 0;   ///< view axis (0 = x, 1 = y, 2 = z)
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+    /// Window depth in [0, 1] per pixel, row-major, bottom row first (GL order); 1 where
+    /// nothing was drawn.
+    std::vector<float> depth;
+    /// The world coordinates along the view axis that window depth 0 and 1 map to.
+    double depth_near = 0;
+    double depth_far = 1;
 };
 
 /// One cull pass: a level (objects or triangles), a view, a direction.
@@ -75,6 +93,10 @@ struct GpuFrameInfo {
     std::uint32_t triangles_per_query = 0;   ///< P this frame used (0 with flags)
     double query_ms = 0;                  ///< O: measured milliseconds per occlusion query
     double rebuild_ms_per_triangle = 0;   ///< R: final-step milliseconds per surviving triangle
+    /// (object, triangle) of every triangle left in the PCS after the cull, ascending.
+    std::vector<std::array<std::uint32_t, 2>> survivors;
+    /// Depth buffers, when GpuCullConfig::depth_every asked for them this frame.
+    std::vector<GpuDepthImage> depth_images;
 };
 
 /// Calls `visit(name, value, unit)` for every per-frame scalar of the GPU cull's trace, in a

@@ -3,6 +3,7 @@
 /// and narrow phase, then the report to the trace sinks.
 
 #include "collidescope/aabb_options.hpp"
+#include "collidescope/adaptive_options.hpp"
 #include "collidescope/gpu_cull.hpp"
 #include "collidescope/scene.hpp"
 #include "collidescope/stats.hpp"
@@ -30,6 +31,7 @@ struct PipelineConfig {
     int threads = 0;
     GpuCullConfig gpu;  ///< options of the GPU cull (methods gpu, ...)
     AabbOptions aabb;   ///< options of the AABB hierarchies (method aabb)
+    AdaptiveOptions adaptive;  ///< options of the decision system (method adaptive)
 };
 
 /// One object pair whose boxes overlap (a == b for self-collision).

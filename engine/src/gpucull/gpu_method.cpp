@@ -85,6 +85,9 @@ public:
         gpucull::cull_pcs(context.frame, pcs, plan, m_renderer, info, times);
         stats.ms.gpu_render += times.render;
         stats.ms.gpu_readback += times.readback;
+        for (const PcsObject& object : pcs) {
+            for (const std::uint32_t triangle : object.triangles) info.survivors.push_back({object.object, triangle});
+        }
         stopwatch.lap_ms();
 
         gpucull::FinalStepStats final_stats;
