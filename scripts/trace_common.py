@@ -7,6 +7,7 @@ the complete frames only (the smallest length, as the tool's reader does).
 import sys
 
 import h5py
+import numpy as np
 
 SCHEMA = "collidescope-trace"
 MAJOR = 1
@@ -43,3 +44,26 @@ def methods(f, n):
     """Method name of each of the first N frames."""
     names = {code: name for name, code in h5py.check_enum_dtype(f["frames/method"].dtype).items()}
     return [names[int(code)] for code in f["frames/method"][:n]]
+
+
+def depth_image_count(f, row):
+    """Depth images of frame row ROW (0 in files before schema 1.2)."""
+    if "gpu/depth/image_offsets" not in f:
+        return 0
+    a, b = f["gpu/depth/image_offsets"][row:row + 2]
+    return int(b - a)
+
+
+def depth_image(f, row, index):
+    """Image INDEX of frame row ROW as a dict: level, view, width, height, near, far and depth
+    (a height x width float array of window depths in [0, 1], row 0 at the bottom; 1 where
+    nothing was drawn). Pixels are stored as uint16: depth = q / 65535."""
+    d = f["gpu/depth"]
+    i = int(d["image_offsets"][row]) + index
+    level, view, width, height = (int(v) for v in d["info"][i])
+    near, far = (float(v) for v in d["range"][i])
+    p0, p1 = (int(v) for v in d["pixel_offsets"][i:i + 2])
+    if p1 - p0 != width * height:
+        sys.exit("depth image %d: %d pixels for %dx%d" % (i, p1 - p0, width, height))
+    depth = d["pixels"][p0:p1].astype(np.float64).reshape(height, width) / 65535.0
+    return {"level": level, "view": view, "width": width, "height": height, "near": near, "far": far, "depth": depth}

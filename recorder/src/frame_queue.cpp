@@ -7,7 +7,10 @@ namespace collidescope::recorder {
 std::size_t FrameRecord::bytes() const {
     std::size_t total = sizeof(FrameRecord) + ms.size() * sizeof(double) + counts.size() * sizeof(std::uint64_t) +
                         pairs.size() * sizeof(TrianglePair) + (gpu.size() + aabb.size()) * sizeof(double) +
-                        gpu_passes.size() * sizeof(std::uint64_t);
+                        gpu_passes.size() * sizeof(std::uint64_t) +
+                        (decision.size() + hybrid.size()) * sizeof(double) +
+                        survivors.size() * sizeof(survivors[0]);
+    for (const GpuDepthImage& image : depth_images) total += sizeof(GpuDepthImage) + image.depth.size() * sizeof(float);
     for (const ObjectRecord& object : objects) {
         total += sizeof(ObjectRecord) + object.positions.size() * sizeof(float);
         // A new topology is shared with the engine, but the writer keeps it alive: count it.

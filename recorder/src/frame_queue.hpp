@@ -2,9 +2,11 @@
 // A frame as the writer thread needs it (copied off the engine's spans), and the bounded queue
 // between the engine's thread and the writer thread.
 
+#include "collidescope/gpu_cull.hpp"
 #include "collidescope/scene.hpp"
 #include "collidescope/types.hpp"
 
+#include <array>
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
@@ -34,6 +36,12 @@ struct FrameRecord {
     std::vector<std::uint64_t> gpu_passes;  ///< for_each_pass_field order, row after row
     bool has_aabb = false;                ///< stats.aabb was set
     std::vector<double> aabb;             ///< for_each_aabb_value order (zeros without)
+    bool has_decision = false;            ///< stats.decision was set (schema 1.2)
+    std::vector<double> decision;         ///< for_each_decision_value order (zeros without)
+    bool has_hybrid = false;              ///< stats.hybrid was set (schema 1.2)
+    std::vector<double> hybrid;           ///< for_each_hybrid_value order (zeros without)
+    std::vector<std::array<std::uint32_t, 2>> survivors;  ///< GpuFrameInfo::survivors
+    std::vector<GpuDepthImage> depth_images;              ///< GpuFrameInfo::depth_images
 
     /// Bytes held (what the queue's cap counts).
     std::size_t bytes() const;

@@ -70,6 +70,14 @@ void Recording::Impl::count_frames() {
         return r - 1;
     };
     n = std::min(n, offset_frames(schema::k_pair_offsets));
+    // The methods' details, in the files whose minor has them.
+    for (const char* group : {schema::k_frame_gpu, schema::k_frame_aabb, schema::k_frame_decision, schema::k_frame_hybrid}) {
+        if (!h5::exists(file.get(), group)) continue;
+        for (const std::string& member : group_members(group)) n = std::min(n, rows(std::string(group) + "/" + member));
+    }
+    for (const char* offsets : {schema::k_gpu_pass_offsets, schema::k_gpu_survivor_offsets, schema::k_depth_image_offsets}) {
+        if (h5::exists(file.get(), offsets)) n = std::min(n, offset_frames(offsets));
+    }
     const std::vector<std::string> objects_listed = group_members(schema::k_objects);
     for (std::uint32_t k = 0; k < objects_listed.size(); ++k) {
         n = std::min(n, offset_frames(schema::object_group(k) + "/" + schema::k_vertex_offsets));

@@ -9,7 +9,6 @@
 #include <algorithm>
 
 namespace collidescope::recorder {
-namespace {
 
 // Reads offsets[row] and offsets[row + 1] of a CSR offsets dataset and checks them against the
 // flat array's rows.
@@ -26,8 +25,6 @@ std::pair<std::uint64_t, std::uint64_t> offset_range(const h5::Where& where, hid
     }
     return {range[0], range[1]};
 }
-
-}  // namespace
 
 std::vector<TrianglePair> Recording::pairs(std::uint64_t row) const {
     const Impl& impl = *m_impl;

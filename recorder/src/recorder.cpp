@@ -109,7 +109,7 @@ void Recorder::State::write_loop() {
     try {
         while (std::optional<FrameRecord> record = queue.pop()) {
             const bool keep = budget.keep(summary.frames);
-            file.append(*record, keep);
+            file.append(*record, {keep, true});
             summary.positions_dropped += keep ? 0 : 1;
             kept += keep ? 1 : 0;
             ++summary.frames;
@@ -132,7 +132,7 @@ void Recorder::State::rethrow_writer_error() {
 
 namespace {
 
-// The methods' own details (schema 1.1): zeros and present = 0 when a method has none.
+// The methods' own details (schema 1.1 and 1.2): zeros and present = 0 when a method has none.
 void copy_details(const FrameStats& stats, FrameRecord& record) {
     record.has_gpu = stats.gpu.has_value();
     for_each_gpu_value(stats.gpu.value_or(GpuFrameInfo{}), [&](const char*, double v, const char*) { record.gpu.push_back(v); });
@@ -140,9 +140,17 @@ void copy_details(const FrameStats& stats, FrameRecord& record) {
         for (const GpuPassInfo& pass : stats.gpu->passes) {
             for_each_pass_field(pass, [&](const char*, std::uint64_t v) { record.gpu_passes.push_back(v); });
         }
+        record.survivors = stats.gpu->survivors;
+        record.depth_images = stats.gpu->depth_images;
     }
     record.has_aabb = stats.aabb.has_value();
     for_each_aabb_value(stats.aabb.value_or(AabbFrameInfo{}), [&](const char*, double v, const char*) { record.aabb.push_back(v); });
+    record.has_decision = stats.decision.has_value();
+    for_each_decision_value(stats.decision.value_or(DecisionInfo{}),
+                            [&](const char*, double v, const char*) { record.decision.push_back(v); });
+    record.has_hybrid = stats.hybrid.has_value();
+    for_each_hybrid_value(stats.hybrid.value_or(HybridFrameInfo{}),
+                          [&](const char*, double v, const char*) { record.hybrid.push_back(v); });
 }
 
 }  // namespace

@@ -9,6 +9,11 @@
 
 namespace collidescope::recorder {
 
+/// Reads offsets[row] and offsets[row + 1] of a CSR offsets dataset and checks them against the
+/// flat array's rows (fails naming both datasets when they disagree).
+std::pair<std::uint64_t, std::uint64_t> offset_range(const h5::Where& where, hid_t file, const std::string& offsets_path,
+                                                     const std::string& flat_path, std::uint64_t row);
+
 struct Recording::Impl {
     h5::Where where;
     h5::Id file;
@@ -40,6 +45,10 @@ struct Recording::Impl {
     void check_schema();
     void count_frames();
     void read_objects();
+    /// Fails unless `row` is a complete frame.
+    void check_row(std::uint64_t row) const {
+        if (row >= frames) where.fail("frame row " + std::to_string(row) + " is not complete");
+    }
     std::vector<std::string> group_members(const std::string& group) const {
         const h5::Id g = h5::open_group(where, file.get(), group);
         return h5::member_names(where, g.get(), group);

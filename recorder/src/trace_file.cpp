@@ -12,9 +12,6 @@ namespace collidescope::recorder {
 namespace {
 
 constexpr hsize_t k_frame_chunk = 256;       // rows per chunk of 1-D per-frame datasets (2 KiB)
-// The methods' details (schema 1.1) are many small columns, most of them zeros for a given
-// method: small chunks keep their first allocation from dominating a short recording's size.
-constexpr hsize_t k_detail_chunk = 32;
 constexpr hsize_t k_pair_chunk = 8192;       // pairs per chunk (128 KiB)
 constexpr hsize_t k_max_chunk_rows = 1u << 20;
 
@@ -106,44 +103,6 @@ void TraceFile::create_frames(std::span<const std::string> methods) {
     append_value(m_pair_offsets, H5T_NATIVE_UINT64, &zero);
 }
 
-void TraceFile::create_details() {
-    h5::create_group(m_where, m_file.get(), schema::k_frame_gpu);
-    const std::string gpu = schema::k_frame_gpu;
-    m_gpu_present = make_column(gpu + "/" + schema::k_present, {H5T_STD_U8LE, 1, k_detail_chunk, 0, schema::k_unit_none});
-    for_each_gpu_value(GpuFrameInfo{}, [&](const char* name, double, const char* unit) {
-        m_gpu.push_back(make_column(gpu + "/" + name, {H5T_IEEE_F64LE, 1, k_detail_chunk, 0, unit}));
-    });
-    h5::create_group(m_where, m_file.get(), schema::k_frame_aabb);
-    const std::string aabb = schema::k_frame_aabb;
-    m_aabb_present = make_column(aabb + "/" + schema::k_present, {H5T_STD_U8LE, 1, k_detail_chunk, 0, schema::k_unit_none});
-    for_each_aabb_value(AabbFrameInfo{}, [&](const char* name, double, const char* unit) {
-        m_aabb.push_back(make_column(aabb + "/" + name, {H5T_IEEE_F64LE, 1, k_detail_chunk, 0, unit}));
-    });
-    h5::create_group(m_where, m_file.get(), schema::k_gpu);
-    std::size_t fields = 0;
-    for_each_pass_field(GpuPassInfo{}, [&](const char*, std::uint64_t) { ++fields; });
-    m_gpu_passes = make_column(schema::k_gpu_passes, {H5T_STD_U64LE, fields, k_detail_chunk, 0, schema::k_unit_none});
-    m_gpu_pass_offsets = make_column(schema::k_gpu_pass_offsets, {H5T_STD_U64LE, 1, k_detail_chunk, 0, schema::k_unit_none});
-    const std::uint64_t zero = 0;
-    append_value(m_gpu_pass_offsets, H5T_NATIVE_UINT64, &zero);
-}
-
-void TraceFile::append_details(const FrameRecord& record) {
-    const std::uint8_t gpu_present = record.has_gpu ? 1 : 0;
-    const std::uint8_t aabb_present = record.has_aabb ? 1 : 0;
-    append_value(m_gpu_present, H5T_NATIVE_UINT8, &gpu_present);
-    for (std::size_t i = 0; i < m_gpu.size(); ++i) append_value(m_gpu[i], H5T_NATIVE_DOUBLE, &record.gpu[i]);
-    append_value(m_aabb_present, H5T_NATIVE_UINT8, &aabb_present);
-    for (std::size_t i = 0; i < m_aabb.size(); ++i) append_value(m_aabb[i], H5T_NATIVE_DOUBLE, &record.aabb[i]);
-    const hsize_t fields = 8;
-    if (!record.gpu_passes.empty()) {
-        h5::append_rows(m_where, m_gpu_passes.dataset.get(), m_gpu_passes.path, m_gpu_passes.length, H5T_NATIVE_UINT64,
-                        record.gpu_passes.size() / fields, record.gpu_passes.data());
-    }
-    const std::uint64_t end = m_gpu_passes.length;
-    append_value(m_gpu_pass_offsets, H5T_NATIVE_UINT64, &end);
-}
-
 void TraceFile::create_objects(const SessionInfo& session, const Frame& first, int deflate_level) {
     h5::create_group(m_where, m_file.get(), schema::k_objects);
     for (std::uint32_t k = 0; k < first.objects.size(); ++k) {
@@ -190,7 +149,7 @@ void TraceFile::append_topology(ObjectColumns& columns, const Topology& topology
     append_value(columns.topology_vertex_count, H5T_NATIVE_UINT32, &topology.vertex_count);
 }
 
-void TraceFile::append(const FrameRecord& record, bool keep_positions) {
+void TraceFile::append(const FrameRecord& record, Keep keep) {
     if (record.objects.size() != m_objects.size()) {
         m_where.fail("frame " + std::to_string(record.frame) + " has " + std::to_string(record.objects.size()) +
                      " objects, the recording " + std::to_string(m_objects.size()));
@@ -199,7 +158,7 @@ void TraceFile::append(const FrameRecord& record, bool keep_positions) {
         ObjectColumns& columns = m_objects[k];
         const ObjectRecord& object = record.objects[k];
         if (object.new_topology) append_topology(columns, *object.new_topology, record.frame);
-        if (keep_positions) {
+        if (keep.positions) {
             h5::append_rows(m_where, columns.positions.dataset.get(), columns.positions.path,
                             columns.positions.length, H5T_NATIVE_FLOAT, object.positions.size() / 3,
                             object.positions.data());
@@ -215,7 +174,7 @@ void TraceFile::append(const FrameRecord& record, bool keep_positions) {
     for (std::size_t s = 0; s < m_ms.size(); ++s) append_value(m_ms[s], H5T_NATIVE_DOUBLE, &record.ms[s]);
     for (std::size_t c = 0; c < m_counts.size(); ++c) append_value(m_counts[c], H5T_NATIVE_UINT64, &record.counts[c]);
     append_value(m_method, m_method_type.get(), &record.method);
-    append_details(record);
+    append_details(record, keep.depth);
     // The frame index last: a reader counts a frame complete when every dataset has its row.
     append_value(m_index, H5T_NATIVE_UINT32, &record.frame);
     m_where.check(H5Fflush(m_file.get(), H5F_SCOPE_LOCAL), "cannot flush frame " + std::to_string(record.frame));
@@ -242,6 +201,12 @@ void TraceFile::close() {
     m_counts.clear();
     m_objects.clear();
     m_method_type.reset();
+    for (DetailGroup* group : {&m_gpu, &m_aabb, &m_decision, &m_hybrid}) *group = DetailGroup{};
+    m_gpu_passes.dataset.reset();
+    m_gpu_pass_offsets.dataset.reset();
+    m_gpu_survivors.dataset.reset();
+    m_gpu_survivor_offsets.dataset.reset();
+    m_depth = DepthColumns{};
     if (m_file.valid() && !m_file.reset()) m_where.fail("cannot close the recording (disk full?)");
 }
 

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace collidescope::recorder {
@@ -21,13 +22,20 @@ public:
     TraceFile(const std::filesystem::path& path, const SessionInfo& session, const Frame& first,
               std::span<const std::string> methods, int deflate_level);
 
-    /// Appends one frame (positions only when `keep_positions`), the frame index last, and
-    /// flushes the file.
-    void append(const FrameRecord& record, bool keep_positions);
+    /// What --budget keeps of one frame.
+    struct Keep {
+        bool positions = true;
+        bool depth = true;  ///< the depth images (GpuFrameInfo::depth_images)
+    };
+    /// Appends one frame (positions and depth images only as `keep` says), the frame index
+    /// last, and flushes the file.
+    void append(const FrameRecord& record, Keep keep);
     /// Current size of the file in bytes.
     std::uint64_t file_bytes() const;
     /// Bytes the positions datasets occupy (all objects).
     std::uint64_t positions_bytes() const;
+    /// Bytes the depth images' pixels occupy.
+    std::uint64_t depth_bytes() const;
     /// Closes the file (SWMR ends). Throws when the final flush fails.
     void close();
 
@@ -47,8 +55,19 @@ private:
     Column make_column(const std::string& path, const h5::ExtensibleSpec& spec, hid_t loc = -1);
     void write_metadata(const SessionInfo& session);
     void create_frames(std::span<const std::string> methods);
+    /// A /frames details group: `present` plus one float64 column per visited value.
+    struct DetailGroup {
+        Column present;
+        std::vector<Column> values;
+    };
+    struct DepthColumns {
+        Column image_offsets, info, range, pixel_offsets, pixels;
+    };
+    DetailGroup create_detail_group(const std::string& group, const std::vector<std::pair<std::string, std::string>>& columns);
+    void append_detail_group(DetailGroup& group, bool present, const std::vector<double>& values);
     void create_details();
-    void append_details(const FrameRecord& record);
+    void append_details(const FrameRecord& record, bool keep_depth);
+    void append_depth(const std::vector<GpuDepthImage>& images);
     void create_objects(const SessionInfo& session, const Frame& first, int deflate_level);
     void append_topology(ObjectColumns& columns, const Topology& topology, std::uint32_t frame);
     void append_value(Column& column, hid_t mem_type, const void* value);
@@ -58,8 +77,11 @@ private:
     h5::Id m_method_type;  ///< the enum of method names
     Column m_index, m_method, m_pairs, m_pair_offsets;
     std::vector<Column> m_ms, m_counts;
-    std::vector<Column> m_gpu, m_aabb;        ///< schema 1.1 details
-    Column m_gpu_present, m_aabb_present, m_gpu_passes, m_gpu_pass_offsets;
+    DetailGroup m_gpu, m_aabb, m_decision, m_hybrid;  ///< schema 1.1 (gpu, aabb) and 1.2 details
+    Column m_gpu_passes, m_gpu_pass_offsets;
+    Column m_gpu_survivors, m_gpu_survivor_offsets;   ///< 1.2
+    DepthColumns m_depth;                             ///< 1.2
+    std::vector<std::uint16_t> m_pixels;              ///< scratch: one image quantised
     std::vector<ObjectColumns> m_objects;
     int m_deflate;
 };

@@ -43,6 +43,13 @@ std::vector<CapturedFrame> record_in_process(const Scene& scene, const std::file
     pipeline_config.method = method;
     pipeline_config.self_collision = self_collision;
     pipeline_config.threads = 2;
+    return record_in_process(scene, file, begin, end, pipeline_config);
+}
+
+std::vector<CapturedFrame> record_in_process(const Scene& scene, const std::filesystem::path& file,
+                                             std::uint32_t begin, std::uint32_t end, const PipelineConfig& pipeline_config) {
+    const std::string& method = pipeline_config.method;
+    const bool self_collision = pipeline_config.self_collision;
     Pipeline pipeline(pipeline_config);
     CaptureSink capture;
     recorder::SessionInfo session;
@@ -112,6 +119,12 @@ void set_int_attr(const std::filesystem::path& file, const std::string& object, 
 void delete_attr(const std::filesystem::path& file, const std::string& object, const std::string& name) {
     const hid_t f = open_rw(file);
     EXPECT_GE(H5Adelete_by_name(f, object.c_str(), name.c_str(), H5P_DEFAULT), 0) << object << " " << name;
+    H5Fclose(f);
+}
+
+void delete_link(const std::filesystem::path& file, const std::string& path) {
+    const hid_t f = open_rw(file);
+    EXPECT_GE(H5Ldelete(f, path.c_str(), H5P_DEFAULT), 0) << path;
     H5Fclose(f);
 }
 

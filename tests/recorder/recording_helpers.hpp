@@ -25,6 +25,9 @@ struct CapturedFrame {
 std::vector<CapturedFrame> record_in_process(const Scene& scene, const std::filesystem::path& file,
                                              std::uint32_t begin, std::uint32_t end, bool self_collision,
                                              const std::string& method = "brute");
+/// The same with a whole pipeline configuration (method, self collision, GPU cull options).
+std::vector<CapturedFrame> record_in_process(const Scene& scene, const std::filesystem::path& file,
+                                             std::uint32_t begin, std::uint32_t end, const PipelineConfig& config);
 
 /// Two sheets of `cells` x `cells` cells (2 cells^2 triangles each): one flat at z = 0, one
 /// upright, sweeping through it along y over `frames` frames (apart, crossing, apart).
@@ -38,6 +41,8 @@ void set_int_attr(const std::filesystem::path& file, const std::string& object, 
                   std::int64_t value);
 /// Deletes attribute `name` of `object`.
 void delete_attr(const std::filesystem::path& file, const std::string& object, const std::string& name);
+/// Deletes the link `path` (a group or dataset) from the file.
+void delete_link(const std::filesystem::path& file, const std::string& path);
 /// Writes an HDF5 file that is not a recording (one dataset, no schema attribute).
 void write_foreign_hdf5(const std::filesystem::path& file);
 

@@ -7,8 +7,10 @@
 /// failure is an InputError that names the file (and the dataset or frame). Reads go to the
 /// file on each call; one thread at a time.
 
+#include "collidescope/gpu_cull.hpp"
 #include "collidescope/types.hpp"
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -32,7 +34,7 @@ struct ObjectInfo {
     std::vector<TopologyInfo> topologies;  ///< in order of from_frame
 };
 
-/// A per-frame series (one dataset of /frames/ms or /frames/counts).
+/// A per-frame series (one dataset of /frames/ms, /frames/counts or a /frames details group).
 template <class T>
 struct Series {
     std::string name;
@@ -66,6 +68,14 @@ public:
     std::vector<std::string> frame_methods() const;
     std::vector<Series<double>> stage_ms() const;
     std::vector<Series<std::uint64_t>> counts() const;
+    /// Per-frame values of one group under /frames ("gpu", "aabb", "decision", "hybrid"), one Series per dataset in the order the for_each_*_value visitor lists them; empty when the file has no such group. Frames whose method did not set that optional hold NaN.
+    std::vector<Series<double>> frame_values(const std::string& group) const;
+    /// The cull passes of complete frame `row` (empty when its method ran no GPU cull).
+    std::vector<GpuPassInfo> gpu_passes(std::uint64_t row) const;
+    /// (object, triangle) of every triangle still in the GPU cull's PCS after culling at frame `row`, ascending (GpuFrameInfo::survivors); empty when none were recorded.
+    std::vector<std::array<std::uint32_t, 2>> survivors(std::uint64_t row) const;
+    /// The depth images recorded for frame `row` (GpuFrameInfo::depth_images); empty when none.
+    std::vector<GpuDepthImage> depth_images(std::uint64_t row) const;
 
     /// Colliding pairs of recorded frame `row` (< frames_complete()).
     std::vector<TrianglePair> pairs(std::uint64_t row) const;

@@ -17,7 +17,9 @@ inline constexpr const char* k_schema_name = "collidescope-trace";
 /// Major: readers refuse files with a newer major (layout changed incompatibly). Minor: only
 /// additions (new datasets or attributes); older readers ignore what they do not know.
 inline constexpr std::int64_t k_version_major = 1;
-inline constexpr std::int64_t k_version_minor = 1;  ///< 1.1: /frames/gpu, /frames/aabb, /gpu
+/// 1.1: /frames/gpu, /frames/aabb, /gpu. 1.2: /frames/decision, /frames/hybrid, /gpu/survivors,
+/// /gpu/depth; string attributes fixed-length (1.0 and 1.1 wrote variable-length ones).
+inline constexpr std::int64_t k_version_minor = 2;
 
 // Root attributes.
 inline constexpr const char* k_attr_schema = "schema";
@@ -42,11 +44,31 @@ inline constexpr const char* k_frame_counts = "/frames/counts";  ///< group: uin
 inline constexpr const char* k_frame_gpu = "/frames/gpu";
 /// Group: float64 per AabbFrameInfo field (for_each_aabb_value), plus uint8 `present`. 1.1.
 inline constexpr const char* k_frame_aabb = "/frames/aabb";
+/// Group: float64 per DecisionInfo field (for_each_decision_value), plus uint8 `present`. 1.2.
+inline constexpr const char* k_frame_decision = "/frames/decision";
+/// Group: float64 per HybridFrameInfo field (for_each_hybrid_value), plus uint8 `present`. 1.2.
+inline constexpr const char* k_frame_hybrid = "/frames/hybrid";
 inline constexpr const char* k_present = "present";
 inline constexpr const char* k_gpu = "/gpu";
 /// (N, 8) uint64: one row per cull pass (for_each_pass_field order). 1.1.
 inline constexpr const char* k_gpu_passes = "/gpu/passes";
 inline constexpr const char* k_gpu_pass_offsets = "/gpu/pass_offsets";  ///< (F + 1) uint64
+/// (S, 2) uint32: (object, triangle) of each triangle left in the PCS after the cull. 1.2.
+inline constexpr const char* k_gpu_survivors = "/gpu/survivors";
+inline constexpr const char* k_gpu_survivor_offsets = "/gpu/survivor_offsets";  ///< (F + 1) uint64
+/// The cull's depth buffers (--depth every:N), one row per image in the image table. 1.2.
+inline constexpr const char* k_gpu_depth = "/gpu/depth";
+inline constexpr const char* k_depth_image_offsets = "/gpu/depth/image_offsets";  ///< (F + 1) uint64
+/// (I, 4) uint32 per image: level (0 objects, 1 triangles), view axis, width, height.
+inline constexpr const char* k_depth_info = "/gpu/depth/info";
+/// (I, 2) float64 per image: the world coordinates along the view axis of window depth 0 and 1.
+inline constexpr const char* k_depth_range = "/gpu/depth/range";
+inline constexpr const char* k_depth_pixel_offsets = "/gpu/depth/pixel_offsets";  ///< (I + 1) uint64
+/// Flat uint16: every image's pixels, row-major, bottom row first; q / 65535 is the window depth,
+/// 65535 exactly where nothing was drawn (depth 1; drawn pixels round to at most 65534).
+inline constexpr const char* k_depth_pixels = "/gpu/depth/pixels";
+/// Quantisation of depth pixels: depth = q / k_depth_scale.
+inline constexpr double k_depth_scale = 65535.0;
 inline constexpr const char* k_collisions = "/collisions";
 inline constexpr const char* k_pairs = "/collisions/pairs";           ///< (P, 4) uint32
 inline constexpr const char* k_pair_offsets = "/collisions/offsets";  ///< (F + 1) uint64

@@ -1,0 +1,135 @@
+// The HDF5 side of the methods' own details (schema 1.1 and 1.2; docs/recording.md): the
+// /frames/<method> groups, the GPU cull's passes, survivors and depth images.
+
+#include "trace_file.hpp"
+
+#include "collidescope/recorder/schema.hpp"
+#include "collidescope/stats.hpp"
+
+#include <cmath>
+
+namespace collidescope::recorder {
+namespace {
+
+// The methods' details are many small columns, most of them zeros for a given method: small
+// chunks keep their first allocation from dominating a short recording's size.
+constexpr hsize_t k_detail_chunk = 32;
+constexpr hsize_t k_survivor_chunk = 8192;   // survivors per chunk (64 KiB)
+constexpr hsize_t k_pixel_chunk = 65536;     // depth pixels per chunk (128 KiB: one 256 x 256 image)
+
+/// (name, unit) of every value a for_each_*_value visitor lists for `info`.
+template <class Info, class ForEach>
+std::vector<std::pair<std::string, std::string>> columns_of(const Info& info, ForEach for_each) {
+    std::vector<std::pair<std::string, std::string>> columns;
+    for_each(info, [&](const char* name, double, const char* unit) { columns.emplace_back(name, unit); });
+    return columns;
+}
+
+std::size_t pass_field_count() {
+    std::size_t fields = 0;
+    for_each_pass_field(GpuPassInfo{}, [&](const char*, std::uint64_t) { ++fields; });
+    return fields;
+}
+
+/// Window depth in [0, 1] -> uint16: 65535 only for depth 1 (nothing drawn) or beyond (and
+/// NaN); drawn pixels round to at most 65534, so "nothing drawn" stays exact.
+std::uint16_t quantise_depth(float depth) {
+    if (!(depth < 1.0f)) return 65535;
+    const double scaled = std::round(std::max(0.0, static_cast<double>(depth)) * schema::k_depth_scale);
+    return static_cast<std::uint16_t>(std::min(scaled, schema::k_depth_scale - 1));
+}
+
+}  // namespace
+
+TraceFile::DetailGroup TraceFile::create_detail_group(const std::string& group,
+                                                      const std::vector<std::pair<std::string, std::string>>& columns) {
+    h5::create_group(m_where, m_file.get(), group);
+    DetailGroup out;
+    out.present = make_column(group + "/" + schema::k_present, {H5T_STD_U8LE, 1, k_detail_chunk, 0, schema::k_unit_none});
+    for (const auto& [name, unit] : columns) {
+        out.values.push_back(make_column(group + "/" + name, {H5T_IEEE_F64LE, 1, k_detail_chunk, 0, unit.c_str()}));
+    }
+    return out;
+}
+
+void TraceFile::append_detail_group(DetailGroup& group, bool present, const std::vector<double>& values) {
+    const std::uint8_t flag = present ? 1 : 0;
+    append_value(group.present, H5T_NATIVE_UINT8, &flag);
+    for (std::size_t i = 0; i < group.values.size(); ++i) append_value(group.values[i], H5T_NATIVE_DOUBLE, &values[i]);
+}
+
+void TraceFile::create_details() {
+    m_gpu = create_detail_group(schema::k_frame_gpu,
+                                columns_of(GpuFrameInfo{}, [](const auto& i, auto&& v) { for_each_gpu_value(i, v); }));
+    m_aabb = create_detail_group(schema::k_frame_aabb,
+                                 columns_of(AabbFrameInfo{}, [](const auto& i, auto&& v) { for_each_aabb_value(i, v); }));
+    m_decision = create_detail_group(
+        schema::k_frame_decision, columns_of(DecisionInfo{}, [](const auto& i, auto&& v) { for_each_decision_value(i, v); }));
+    m_hybrid = create_detail_group(
+        schema::k_frame_hybrid, columns_of(HybridFrameInfo{}, [](const auto& i, auto&& v) { for_each_hybrid_value(i, v); }));
+
+    h5::create_group(m_where, m_file.get(), schema::k_gpu);
+    m_gpu_passes = make_column(schema::k_gpu_passes, {H5T_STD_U64LE, pass_field_count(), k_detail_chunk, 0, schema::k_unit_none});
+    m_gpu_pass_offsets = make_column(schema::k_gpu_pass_offsets, {H5T_STD_U64LE, 1, k_detail_chunk, 0, schema::k_unit_none});
+    const int deflate = std::max(m_deflate, 1);
+    m_gpu_survivors = make_column(schema::k_gpu_survivors, {H5T_STD_U32LE, 2, k_survivor_chunk, deflate, schema::k_unit_none});
+    m_gpu_survivor_offsets =
+        make_column(schema::k_gpu_survivor_offsets, {H5T_STD_U64LE, 1, k_detail_chunk, 0, schema::k_unit_none});
+
+    h5::create_group(m_where, m_file.get(), schema::k_gpu_depth);
+    m_depth.image_offsets = make_column(schema::k_depth_image_offsets, {H5T_STD_U64LE, 1, k_detail_chunk, 0, schema::k_unit_none});
+    m_depth.info = make_column(schema::k_depth_info, {H5T_STD_U32LE, 4, k_detail_chunk, 0, schema::k_unit_none});
+    m_depth.range = make_column(schema::k_depth_range, {H5T_IEEE_F64LE, 2, k_detail_chunk, 0, schema::k_unit_length});
+    m_depth.pixel_offsets = make_column(schema::k_depth_pixel_offsets, {H5T_STD_U64LE, 1, k_detail_chunk, 0, schema::k_unit_none});
+    // Compressed always: the background (65535) dominates most views.
+    m_depth.pixels = make_column(schema::k_depth_pixels, {H5T_STD_U16LE, 1, k_pixel_chunk, deflate, "1/65535 window depth"});
+
+    const std::uint64_t zero = 0;
+    for (Column* offsets : {&m_gpu_pass_offsets, &m_gpu_survivor_offsets, &m_depth.image_offsets, &m_depth.pixel_offsets}) {
+        append_value(*offsets, H5T_NATIVE_UINT64, &zero);
+    }
+}
+
+void TraceFile::append_depth(const std::vector<GpuDepthImage>& images) {
+    for (const GpuDepthImage& image : images) {
+        if (image.depth.size() != std::size_t{image.width} * image.height) {
+            m_where.fail("depth image " + std::to_string(image.width) + "x" + std::to_string(image.height) + " holds " +
+                         std::to_string(image.depth.size()) + " pixels");
+        }
+        m_pixels.resize(image.depth.size());
+        for (std::size_t p = 0; p < image.depth.size(); ++p) m_pixels[p] = quantise_depth(image.depth[p]);
+        h5::append_rows(m_where, m_depth.pixels.dataset.get(), m_depth.pixels.path, m_depth.pixels.length,
+                        H5T_NATIVE_UINT16, m_pixels.size(), m_pixels.data());
+        const std::uint64_t pixels_end = m_depth.pixels.length;
+        append_value(m_depth.pixel_offsets, H5T_NATIVE_UINT64, &pixels_end);
+        const std::uint32_t info[4] = {image.level, image.view, image.width, image.height};
+        append_value(m_depth.info, H5T_NATIVE_UINT32, info);
+        const double range[2] = {image.depth_near, image.depth_far};
+        append_value(m_depth.range, H5T_NATIVE_DOUBLE, range);
+    }
+    const std::uint64_t images_end = m_depth.info.length;
+    append_value(m_depth.image_offsets, H5T_NATIVE_UINT64, &images_end);
+}
+
+void TraceFile::append_details(const FrameRecord& record, bool keep_depth) {
+    append_detail_group(m_gpu, record.has_gpu, record.gpu);
+    append_detail_group(m_aabb, record.has_aabb, record.aabb);
+    append_detail_group(m_decision, record.has_decision, record.decision);
+    append_detail_group(m_hybrid, record.has_hybrid, record.hybrid);
+    const hsize_t fields = pass_field_count();
+    if (!record.gpu_passes.empty()) {
+        h5::append_rows(m_where, m_gpu_passes.dataset.get(), m_gpu_passes.path, m_gpu_passes.length, H5T_NATIVE_UINT64,
+                        record.gpu_passes.size() / fields, record.gpu_passes.data());
+    }
+    const std::uint64_t passes_end = m_gpu_passes.length;
+    append_value(m_gpu_pass_offsets, H5T_NATIVE_UINT64, &passes_end);
+    h5::append_rows(m_where, m_gpu_survivors.dataset.get(), m_gpu_survivors.path, m_gpu_survivors.length,
+                    H5T_NATIVE_UINT32, record.survivors.size(), record.survivors.data());
+    const std::uint64_t survivors_end = m_gpu_survivors.length;
+    append_value(m_gpu_survivor_offsets, H5T_NATIVE_UINT64, &survivors_end);
+    append_depth(keep_depth ? record.depth_images : std::vector<GpuDepthImage>{});
+}
+
+std::uint64_t TraceFile::depth_bytes() const { return H5Dget_storage_size(m_depth.pixels.dataset.get()); }
+
+}  // namespace collidescope::recorder
