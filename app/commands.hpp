@@ -30,6 +30,9 @@ Command add_validate_command(CLI::App& app);
 /// `collidescope compare`: pairs and times of two recordings; exit 1 when pairs differ (compare.cpp).
 Command add_compare_command(CLI::App& app);
 
+/// `collidescope replay`: a recording -> annotated PNG frames, a contact sheet; --diff two (replay.cpp).
+Command add_replay_command(CLI::App& app);
+
 /// `collidescope export`: a built-in scene as PLY frame sequences + scene.json (export.cpp).
 Command add_export_command(CLI::App& app);
 

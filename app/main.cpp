@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
         collidescope::app::add_inspect_command(app),
         collidescope::app::add_validate_command(app),
         collidescope::app::add_compare_command(app),
+        collidescope::app::add_replay_command(app),
         collidescope::app::add_export_command(app),
         collidescope::app::add_bench_command(app),
     };

@@ -1,0 +1,155 @@
+// `collidescope replay`: a recording -> annotated PNG frames (and a contact sheet), or two
+// recordings side by side with --diff (replays/, docs/replay.md).
+
+#include "commands.hpp"
+#include "frame_range.hpp"
+#include "progress.hpp"
+
+#include "collidescope/error.hpp"
+#include "collidescope/replays/replay.hpp"
+
+#include <charconv>
+#include <cstdio>
+#include <limits>
+#include <memory>
+
+namespace collidescope::app {
+namespace {
+
+struct ReplayCliOptions {
+    std::vector<std::string> recordings;  ///< one, or two with --diff
+    std::string output;                   ///< -o DIR
+    std::string frames;                   ///< "" = every recorded frame
+    std::string size = "1280x720";
+    std::string camera = "auto";
+    std::string show = "all";
+    int threads = 0;
+    std::string contact_sheet;
+    std::string sheet_frames = "every";
+    int sheet_count = 12;
+    bool diff = false;
+    bool quiet = false;
+};
+
+constexpr const char* k_footer = R"(Writes DIR/frame_NNNN.png per recorded frame (NNNN = scene frame number), rendered offscreen
+(OSMesa, Mesa llvmpipe) in several threads: the meshes (one colour per object), colliding
+triangles red, triangles left in the GPU cull's PCS amber and culled ones dimmed, the recorded
+depth buffers as thumbnails with a colour bar, a panel (frame, method and mode, the decision
+and its inputs, time per stage, pairs, PCS per pass, queries, triangles per query, the view
+matrix as a heat map) and a timeline of per-frame time coloured by mode. Layers for --show:
+meshes, collisions, pcs, depth, overlay, timeline, legend (or all, none). Whatever the
+recording lacks is said on the image and on stderr. Same recording and options: same bytes.
+--diff A.h5 B.h5 writes DIR/diff_NNNN.png: the frames both hold, A left and B right, the pairs
+only one of them found in green. See docs/replay.md.
+Exit codes: 0 written (--diff: same pairs), 1 (--diff only) the pairs differ, 2 error.)";
+
+void parse_image_size(const std::string& text, replays::ReplayOptions& options) {
+    const std::size_t x = text.find('x');
+    int width = 0;
+    int height = 0;
+    const bool ok = x != std::string::npos &&
+                    std::from_chars(text.data(), text.data() + x, width).ptr == text.data() + x &&
+                    std::from_chars(text.data() + x + 1, text.data() + text.size(), height).ptr ==
+                        text.data() + text.size();
+    if (!ok || width < 64 || height < 64 || width > 8192 || height > 8192) {
+        throw InputError("--size must be WIDTHxHEIGHT, each 64 to 8192 pixels, not '" + text + "'");
+    }
+    options.width = width;
+    options.height = height;
+}
+
+replays::ReplayOptions replay_options(const ReplayCliOptions& cli) {
+    replays::ReplayOptions options;
+    options.output_dir = cli.output;
+    if (!cli.frames.empty()) {
+        // Scene frame numbers; the recording says which of them it holds.
+        const FrameRange range = parse_frame_range(cli.frames, std::numeric_limits<std::uint32_t>::max());
+        options.frame_begin = range.begin;
+        options.frame_end = range.end;
+    }
+    parse_image_size(cli.size, options);
+    options.camera = replays::parse_camera(cli.camera);
+    options.layers = replays::parse_layers(cli.show);
+    if (cli.threads < 0) throw InputError("--threads must be 0 (all hardware threads) or more");
+    options.threads = cli.threads;
+    options.contact_sheet = cli.contact_sheet;
+    options.sheet_selection = replays::parse_sheet_selection(cli.sheet_frames);
+    if (cli.sheet_count < 1) throw InputError("--sheet-count must be at least 1");
+    options.sheet_count = cli.sheet_count;
+    return options;
+}
+
+std::string rate_line(const replays::ReplaySummary& summary, const replays::ReplayOptions& options) {
+    char line[256];
+    std::snprintf(line, sizeof line, "rendered %llu frames of %llu triangles at %dx%d in %.2f s (%.1f frames/s, %d threads, %s)",
+                  static_cast<unsigned long long>(summary.frames), static_cast<unsigned long long>(summary.triangles),
+                  options.width, options.height, summary.seconds,
+                  summary.seconds > 0 ? double(summary.frames) / summary.seconds : 0.0, summary.threads,
+                  summary.renderer.c_str());
+    return line;
+}
+
+int run_replay(const ReplayCliOptions& cli) {
+    if (cli.diff != (cli.recordings.size() == 2)) {
+        throw InputError(cli.diff ? "--diff needs two recordings: replay --diff A.h5 B.h5 -o DIR"
+                                  : "replay takes one recording (two with --diff)");
+    }
+    const replays::ReplayOptions options = replay_options(cli);
+    std::unique_ptr<Progress> bar;  // made at the first frame, when the number of frames is known
+    auto frame_done = [&](std::uint64_t total) {
+        if (!bar) bar = std::make_unique<Progress>(total);
+        bar->advance();
+    };
+    if (cli.diff) {
+        const replays::ReplaySummary summary = replays::replay_diff(cli.recordings[0], cli.recordings[1], options, frame_done);
+        if (bar) bar->finish();
+        std::printf("wrote %llu side-by-side frames to %s (diff_NNNN.png): %llu pairs only in %s, %llu only in %s\n",
+                    static_cast<unsigned long long>(summary.frames), cli.output.c_str(),
+                    static_cast<unsigned long long>(summary.only_in_a), cli.recordings[0].c_str(),
+                    static_cast<unsigned long long>(summary.only_in_b), cli.recordings[1].c_str());
+        if (!cli.quiet) std::fprintf(stderr, "%s\n", rate_line(summary, options).c_str());
+        return summary.only_in_a + summary.only_in_b == 0 ? 0 : 1;
+    }
+    const replays::ReplaySummary summary = replays::replay(cli.recordings[0], options, frame_done);
+    if (bar) bar->finish();
+    for (const std::string& note : summary.notes) std::fprintf(stderr, "replay: note: %s\n", note.c_str());
+    if (!cli.quiet) std::fprintf(stderr, "%s\n", rate_line(summary, options).c_str());
+    std::printf("wrote %llu frames to %s (%s .. %s)\n", static_cast<unsigned long long>(summary.frames),
+                cli.output.c_str(), summary.files.front().filename().c_str(), summary.files.back().filename().c_str());
+    if (!summary.contact_sheet.empty()) std::printf("contact sheet: %s\n", summary.contact_sheet.c_str());
+    return 0;
+}
+
+}  // namespace
+
+Command add_replay_command(CLI::App& app) {
+    auto options = std::make_shared<ReplayCliOptions>();
+    CLI::App* replay = app.add_subcommand("replay", "Render a recording as annotated PNG frames, offscreen (or --diff two)");
+    replay->footer(k_footer);
+    replay->add_option("recordings", options->recordings, "The recording (two with --diff)")
+        ->required()
+        ->type_name("RECORDING.h5");
+    replay->add_option("-o,--output", options->output, "Directory for the PNGs (created when missing)")
+        ->required()
+        ->type_name("DIR");
+    replay->add_option("--frames", options->frames, "Scene frames to replay: A:B (half-open), A:, :B or N")
+        ->type_name("A:B");
+    replay->add_option("--size", options->size, "Image size in pixels")->type_name("WxH")->capture_default_str();
+    replay->add_option("--camera", options->camera, "auto, orbit[:DEG_PER_FRAME] or fixed:EX,EY,EZ[:TX,TY,TZ]")
+        ->capture_default_str();
+    replay->add_option("--show", options->show, "Layers: meshes,collisions,pcs,depth,overlay,timeline,legend | all | none")
+        ->type_name("LIST")
+        ->capture_default_str();
+    replay->add_option("--threads", options->threads, "Render threads, each with its own GL context; 0 = all hardware threads")
+        ->capture_default_str();
+    replay->add_option("--contact-sheet", options->contact_sheet, "Also write a grid of selected frames to this PNG")
+        ->type_name("FILE.png");
+    replay->add_option("--sheet-frames", options->sheet_frames, "Contact sheet frames: every, collisions or slowest")
+        ->capture_default_str();
+    replay->add_option("--sheet-count", options->sheet_count, "Frames on the contact sheet, at most")->capture_default_str();
+    replay->add_flag("--diff", options->diff, "Compare two recordings side by side, differing pairs highlighted");
+    replay->add_flag("-q,--quiet", options->quiet, "No rate line on stderr");
+    return {replay, [options] { return run_replay(*options); }};
+}
+
+}  // namespace collidescope::app

@@ -1,0 +1,75 @@
+#pragma once
+/// Options of the replayer (docs/replay.md): what a frame shows, the camera, the image size.
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+namespace collidescope::replays {
+
+/// Layers of a frame, each switchable with `--show` (bits of ReplayOptions::layers).
+enum Layer : unsigned {
+    k_layer_meshes = 1,      ///< the meshes, shaded, one colour per object
+    k_layer_collisions = 2,  ///< colliding triangles in the collision colour
+    k_layer_pcs = 4,         ///< triangles left in the GPU cull's PCS in one colour, culled ones dimmed
+    k_layer_depth = 8,       ///< the recorded depth buffers as thumbnails, with their legend bar
+    k_layer_overlay = 16,    ///< the Dear ImGui panel: frame, mode, decision, times, PCS, queries, view matrix
+    k_layer_timeline = 32,   ///< per-frame total time coloured by mode, current frame marked
+    k_layer_legend = 64,     ///< the colour legend of the triangle states and objects
+    k_layer_all = 127,
+};
+
+/// Parses a comma-separated list of layer names ("meshes,collisions,pcs,depth,overlay,timeline,
+/// legend", or "all", or "none"). Throws InputError naming the unknown name.
+unsigned parse_layers(const std::string& list);
+
+/// Where the camera looks from.
+struct CameraSpec {
+    enum class Kind {
+        Auto,   ///< frames the bounds of every replayed frame, from a fixed direction
+        Orbit,  ///< as Auto, turning about the vertical (z) axis around the bounds' centre
+        Fixed,  ///< an explicit eye and target
+    };
+    Kind kind = Kind::Auto;
+    /// Orbit: degrees turned per replayed frame; 0 = one full turn over the replayed frames.
+    double degrees_per_frame = 0;
+    std::array<double, 3> eye{};     ///< Fixed: the eye, input length units
+    std::array<double, 3> target{};  ///< Fixed: the point looked at
+    bool target_given = false;       ///< Fixed: false = the bounds' centre
+    double fov_degrees = 40;         ///< vertical field of view
+};
+
+/// Parses `auto`, `orbit`, `orbit:DEG` (degrees per frame) or `fixed:EX,EY,EZ[:TX,TY,TZ]`.
+/// Throws InputError naming the spec.
+CameraSpec parse_camera(const std::string& spec);
+
+/// Which frames the contact sheet shows.
+enum class SheetSelection {
+    Every,       ///< evenly spaced over the replayed frames
+    Collisions,  ///< the frames with colliding pairs (evenly spaced among them when too many)
+    Slowest,     ///< the frames with the largest total time, in frame order
+};
+
+/// Parses `every`, `collisions` or `slowest`. Throws InputError naming the text.
+SheetSelection parse_sheet_selection(const std::string& text);
+
+/// Options of one replay.
+struct ReplayOptions {
+    std::filesystem::path output_dir;  ///< PNGs go here (created when missing)
+    /// Scene frames to replay, half-open [frame_begin, frame_end); rows whose /frames/index lies
+    /// outside are skipped. The default is every recorded frame.
+    std::uint32_t frame_begin = 0;
+    std::uint32_t frame_end = UINT32_MAX;
+    int width = 1280;   ///< pixels
+    int height = 720;   ///< pixels
+    CameraSpec camera;
+    unsigned layers = k_layer_all;  ///< Layer bits
+    /// Render threads, each with its own GL context; 0 = one per hardware thread.
+    int threads = 0;
+    std::filesystem::path contact_sheet;  ///< "" = none
+    SheetSelection sheet_selection = SheetSelection::Every;
+    int sheet_count = 12;  ///< frames on the contact sheet, at most
+};
+
+}  // namespace collidescope::replays

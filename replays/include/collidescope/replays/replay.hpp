@@ -1,0 +1,48 @@
+#pragma once
+/// The replayer: a recording (recorder/, docs/recording.md) -> one annotated PNG per frame,
+/// rendered offscreen through the engine's GL context interface (OSMesa), several frames at
+/// once in several threads, each with its own context. docs/replay.md says what a frame shows.
+
+#include "collidescope/replays/options.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace collidescope::replays {
+
+/// Called after each frame is written, from the thread that wrote it, one call at a time, with
+/// the number of frames the run writes (for a progress bar).
+using FrameDone = std::function<void(std::uint64_t total)>;
+
+/// What a replay did.
+struct ReplaySummary {
+    std::uint64_t frames = 0;             ///< PNGs written
+    std::vector<std::filesystem::path> files;  ///< the PNGs, in frame order
+    std::filesystem::path contact_sheet;  ///< "" when none was asked for
+    double seconds = 0;                   ///< wall time of the rendering (after reading the metadata)
+    int threads = 0;                      ///< render threads used
+    std::uint64_t triangles = 0;          ///< triangles of the first replayed frame
+    std::string renderer;                 ///< GL_RENDERER
+    /// What the recording lacks that a layer would show ("no depth buffers in this recording", ...).
+    std::vector<std::string> notes;
+    /// --diff only: frames compared, and pairs found by only one of the two recordings.
+    std::uint64_t only_in_a = 0;
+    std::uint64_t only_in_b = 0;
+};
+
+/// Replays `recording` into `options.output_dir`/frame_NNNN.png (NNNN = the scene frame number).
+/// Throws InputError naming the file (unreadable or corrupt recording, no frame in range,
+/// unwritable output) or UnavailableError (no GL context).
+ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions& options,
+                     const FrameDone& frame_done = {});
+
+/// Renders the frames both recordings hold side by side (a left, b right) into
+/// `options.output_dir`/diff_NNNN.png, the pairs each found that the other did not highlighted.
+/// Frames are matched by scene frame number. Throws as replay().
+ReplaySummary replay_diff(const std::filesystem::path& a, const std::filesystem::path& b,
+                          const ReplayOptions& options, const FrameDone& frame_done = {});
+
+}  // namespace collidescope::replays

@@ -1,0 +1,138 @@
+// Reading a recording for replay: the series at once, one frame's geometry and state on demand.
+
+#include "frame_data.hpp"
+
+#include "collidescope/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace collidescope::replays {
+
+double value_of(const NamedValues& values, const std::string& name) {
+    for (const auto& [key, value] : values) {
+        if (key == name) return value;
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+}
+
+int frame_mode(const std::string& method, const NamedValues& decision) {
+    const double mode = value_of(decision, "mode");
+    if (std::isfinite(mode)) return int(mode);
+    if (method == "aabb") return 1;
+    if (method == "gpu" || method == "gpu-naive") return 2;
+    if (method == "hybrid") return 3;
+    return 0;
+}
+
+RecordingData::RecordingData(const std::filesystem::path& path)
+    : m_path(path.string()), m_recording(path), m_metadata(m_recording.metadata()),
+      m_indices(m_recording.frame_indices()), m_methods(m_recording.frame_methods()),
+      m_stage_ms(m_recording.stage_ms()), m_counts(m_recording.counts()),
+      m_gpu(m_recording.frame_values("gpu")), m_decision(m_recording.frame_values("decision")),
+      m_aabb(m_recording.frame_values("aabb")), m_hybrid(m_recording.frame_values("hybrid")),
+      m_pair_counts(m_recording.pair_counts()) {
+    const std::uint64_t frames = m_indices.size();
+    m_totals.assign(frames, 0.0);
+    for (const recorder::Series<double>& series : m_stage_ms) {
+        if (series.name == "total") m_totals.assign(series.values.begin(), series.values.end());
+    }
+    m_modes.resize(frames);
+    for (std::uint64_t row = 0; row < frames; ++row) m_modes[row] = frame_mode(m_methods[row], row_of(m_decision, row));
+}
+
+std::vector<std::string> RecordingData::object_names() const {
+    std::vector<std::string> names;
+    for (const recorder::ObjectInfo& object : m_recording.objects()) names.push_back(object.name);
+    return names;
+}
+
+std::string RecordingData::attribute(const std::string& name) const {
+    for (const auto& [key, value] : m_metadata) {
+        if (key == name) return value;
+    }
+    return "";
+}
+
+std::vector<std::uint64_t> RecordingData::rows_in(std::uint32_t begin, std::uint32_t end) const {
+    std::vector<std::uint64_t> rows;
+    for (std::uint64_t row = 0; row < m_indices.size(); ++row) {
+        if (m_indices[row] >= begin && m_indices[row] < end) rows.push_back(row);
+    }
+    return rows;
+}
+
+Bounds RecordingData::bounds(const std::vector<std::uint64_t>& rows) {
+    Bounds bounds;
+    for (const std::uint64_t row : rows) {
+        for (std::uint32_t object = 0; object < object_count(); ++object) {
+            const std::vector<float> xyz = m_recording.positions(object, row);
+            for (std::size_t i = 0; i + 2 < xyz.size(); i += 3) bounds.add(xyz[i], xyz[i + 1], xyz[i + 2]);
+        }
+    }
+    return bounds;
+}
+
+NamedValues RecordingData::row_of(const std::vector<recorder::Series<double>>& series, std::uint64_t row) {
+    NamedValues values;
+    // A group whose first value is NaN was not set on this frame (the method does not report it).
+    if (series.empty() || row >= series.front().values.size() || std::isnan(series.front().values[row])) return values;
+    for (const recorder::Series<double>& one : series) values.emplace_back(one.name, one.values[row]);
+    return values;
+}
+
+std::shared_ptr<const std::vector<TriIndices>> RecordingData::topology(std::uint32_t object, std::size_t index) {
+    auto& cached = m_topologies[{object, index}];
+    if (!cached) cached = std::make_shared<const std::vector<TriIndices>>(m_recording.triangles(object, index));
+    return cached;
+}
+
+FrameData RecordingData::load(std::uint64_t row, std::uint64_t ordinal) {
+    FrameData data;
+    data.row = row;
+    data.frame = m_indices[row];
+    data.ordinal = ordinal;
+    data.method = m_methods[row];
+    for (const recorder::Series<double>& series : m_stage_ms) data.stage_ms.emplace_back(series.name, series.values[row]);
+    for (const recorder::Series<std::uint64_t>& series : m_counts) {
+        data.counts.emplace_back(series.name, double(series.values[row]));
+    }
+    data.gpu = row_of(m_gpu, row);
+    data.decision = row_of(m_decision, row);
+    data.aabb = row_of(m_aabb, row);
+    data.hybrid = row_of(m_hybrid, row);
+    data.pcs_recorded = !data.gpu.empty();
+    if (data.pcs_recorded) {
+        data.passes = m_recording.gpu_passes(row);
+        data.depth_images = m_recording.depth_images(row);
+    }
+    const std::uint8_t base = data.pcs_recorded ? k_state_culled : k_state_plain;
+    data.objects.resize(object_count());
+    for (std::uint32_t object = 0; object < object_count(); ++object) {
+        ObjectFrame& out = data.objects[object];
+        out.topology = m_recording.topology_at(object, data.frame);
+        out.triangles = topology(object, out.topology);
+        out.positions = m_recording.positions(object, row);
+        if (out.positions.empty() && !out.triangles->empty()) data.positions_dropped = true;
+        out.states.assign(out.triangles->size(), base);
+    }
+    auto mark = [&](std::uint32_t object, std::uint32_t triangle, std::uint8_t state) {
+        if (object >= data.objects.size() || triangle >= data.objects[object].states.size()) {
+            throw InputError(m_path + ": frame " + std::to_string(data.frame) + ": object " + std::to_string(object) +
+                             " triangle " + std::to_string(triangle) + " out of range");
+        }
+        data.objects[object].states[triangle] = std::max(data.objects[object].states[triangle], state);
+    };
+    if (data.pcs_recorded) {
+        for (const auto& [object, triangle] : m_recording.survivors(row)) mark(object, triangle, k_state_pcs);
+    }
+    data.colliding = m_recording.pairs(row);
+    for (const TrianglePair& pair : data.colliding) {
+        mark(pair.obj_a, pair.tri_a, k_state_colliding);
+        mark(pair.obj_b, pair.tri_b, k_state_colliding);
+    }
+    return data;
+}
+
+}  // namespace collidescope::replays

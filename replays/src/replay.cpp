@@ -1,0 +1,148 @@
+// replay(): a recording -> one annotated PNG per frame, rendered in parallel, and the contact
+// sheet.
+
+#include "collidescope/replays/replay.hpp"
+
+#include "contact_sheet.hpp"
+#include "frame_data.hpp"
+#include "png.hpp"
+#include "render_pool.hpp"
+#include "replay_common.hpp"
+
+#include "collidescope/error.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <mutex>
+#include <set>
+
+namespace collidescope::replays {
+namespace {
+
+std::filesystem::path frame_file(const std::filesystem::path& dir, const char* prefix, std::uint32_t frame) {
+    char name[48];
+    std::snprintf(name, sizeof name, "%s_%04u.png", prefix, frame);
+    return dir / name;
+}
+
+}  // namespace
+
+void prepare_output_dir(const std::filesystem::path& dir) {
+    std::error_code error;
+    std::filesystem::create_directories(dir, error);
+    if (error || !std::filesystem::is_directory(dir)) {
+        throw InputError(dir.string() + ": cannot create the output directory" +
+                         (error ? " (" + error.message() + ")" : std::string()));
+    }
+}
+
+std::vector<std::uint64_t> replay_rows(const RecordingData& data, const ReplayOptions& options) {
+    std::vector<std::uint64_t> rows = data.rows_in(options.frame_begin, options.frame_end);
+    if (rows.empty()) {
+        throw InputError(data.path() + ": no recorded frame in frames " + std::to_string(options.frame_begin) + ":" +
+                         (options.frame_end == UINT32_MAX ? std::string() : std::to_string(options.frame_end)) +
+                         (data.rows() == 0 ? std::string(" (the recording has no complete frame)")
+                                           : " (recorded: frames " + std::to_string(data.indices().front()) + " to " +
+                                                 std::to_string(data.indices().back()) + ")"));
+    }
+    return rows;
+}
+
+SessionView session_view(const RecordingData& data) {
+    SessionView session;
+    session.file = data.path();
+    const std::string preset = data.attribute("scene_preset");
+    session.scene = data.attribute("scene") + (preset.empty() ? "" : " (" + preset + ")");
+    session.method = data.attribute("method");
+    session.depth = data.attribute("depth");
+    session.frames = data.rows();
+    session.object_names = data.object_names();
+    session.totals = &data.totals();
+    session.modes = &data.modes();
+    session.indices = &data.indices();
+    return session;
+}
+
+ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions& options, const FrameDone& frame_done) {
+    RecordingData data(recording);
+    const std::vector<std::uint64_t> rows = replay_rows(data, options);
+    prepare_output_dir(options.output_dir);
+    const Bounds bounds = data.bounds(rows);
+    const FrameLayout layout = frame_layout(options.width, options.height, options.layers);
+    const SessionView session = session_view(data);
+
+    std::vector<double> totals;
+    std::vector<std::uint64_t> pairs;
+    for (const std::uint64_t row : rows) {
+        totals.push_back(data.totals()[row]);
+        pairs.push_back(data.pair_counts()[row]);
+    }
+    const bool sheet = !options.contact_sheet.empty();
+    const std::vector<std::uint64_t> picked =
+        sheet ? select_sheet_frames(options.sheet_selection, options.sheet_count, totals, pairs) : std::vector<std::uint64_t>{};
+    const std::set<std::uint64_t> on_sheet(picked.begin(), picked.end());
+    const TileSize tile = sheet_tile_size(options.width, options.height);
+    std::map<std::uint64_t, SheetTile> tiles;
+
+    ReplaySummary summary;
+    summary.files.resize(rows.size());
+    std::mutex reader_lock;
+    std::mutex done_lock;
+    bool any_depth = false;
+    bool any_pcs = false;
+    bool any_decision = false;
+    const auto start = std::chrono::steady_clock::now();
+    summary.renderer = run_parallel(options.threads, rows.size(), options.width, options.height,
+                                    [&](RenderThread& thread, std::uint64_t i) {
+        FrameData frame;
+        {
+            const std::lock_guard<std::mutex> guard(reader_lock);
+            frame = data.load(rows[i], i);
+        }
+        const Camera camera = make_camera(options.camera, bounds, layout.scene, i, rows.size());
+        thread.renderer->clear();
+        thread.renderer->draw(frame, camera, options.layers);
+        thread.overlay->draw_frame(frame, session, layout, options.layers);
+        const std::vector<std::uint8_t> rgba = thread.renderer->read_rgba();
+        const std::filesystem::path file = frame_file(options.output_dir, "frame", frame.frame);
+        write_png(file, rgba, options.width, options.height);
+        SheetTile sheet_tile;
+        if (on_sheet.count(i) != 0) {
+            sheet_tile = {downscale(rgba, options.width, options.height, tile.width, tile.height), frame.frame,
+                          frame_mode(frame.method, frame.decision), frame.method, frame.colliding.size(), totals[i]};
+        }
+        const std::lock_guard<std::mutex> guard(done_lock);
+        summary.files[i] = file;
+        if (i == 0) {
+            for (const ObjectFrame& object : frame.objects) summary.triangles += object.triangles->size();
+        }
+        any_depth = any_depth || !frame.depth_images.empty();
+        any_pcs = any_pcs || frame.pcs_recorded;
+        any_decision = any_decision || !frame.decision.empty();
+        if (on_sheet.count(i) != 0) tiles[i] = std::move(sheet_tile);
+        ++summary.frames;
+        if (frame_done) frame_done(rows.size());
+    });
+    summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    summary.threads = render_threads(options.threads, rows.size());
+    if ((options.layers & k_layer_depth) != 0 && !any_depth) {
+        summary.notes.push_back("no depth buffers in this recording (record --method gpu --depth every:N): no thumbnails");
+    }
+    if ((options.layers & k_layer_pcs) != 0 && !any_pcs) {
+        summary.notes.push_back("no GPU cull state in this recording (method " + session.method +
+                                "): PCS and culled triangles not shown");
+    }
+    if ((options.layers & k_layer_overlay) != 0 && !any_decision) {
+        summary.notes.push_back("no decisions in this recording (record --method adaptive): the panel says not recorded");
+    }
+    if (sheet) {
+        std::vector<SheetTile> ordered;
+        for (auto& [i, one] : tiles) ordered.push_back(std::move(one));
+        write_contact_sheet(options.contact_sheet, ordered, tile, session, options.sheet_selection);
+        summary.contact_sheet = options.contact_sheet;
+    }
+    return summary;
+}
+
+}  // namespace collidescope::replays

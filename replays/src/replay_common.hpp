@@ -1,0 +1,22 @@
+#pragma once
+// Steps replay() and replay_diff() share (replays/src, private).
+
+#include "frame_data.hpp"
+#include "overlay.hpp"
+
+#include "collidescope/replays/options.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace collidescope::replays {
+
+/// Creates `dir` when missing. Throws InputError naming it when that fails.
+void prepare_output_dir(const std::filesystem::path& dir);
+/// The rows of `data` in the options' frame range. Throws InputError naming the file when none.
+std::vector<std::uint64_t> replay_rows(const RecordingData& data, const ReplayOptions& options);
+/// The session's annotations; points into `data`.
+SessionView session_view(const RecordingData& data);
+
+}  // namespace collidescope::replays
