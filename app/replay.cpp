@@ -86,7 +86,10 @@ std::string rate_line(const replays::ReplaySummary& summary, const replays::Repl
                   options.width, options.height, summary.seconds,
                   summary.seconds > 0 ? double(summary.frames) / summary.seconds : 0.0, summary.threads,
                   summary.renderer.c_str());
-    return line;
+    std::string text = line;
+    std::snprintf(line, sizeof line, "; thread seconds: read %.2f, draw %.2f, read back %.2f, png %.2f",
+                  summary.read_seconds, summary.draw_seconds, summary.readback_seconds, summary.png_seconds);
+    return text + line;
 }
 
 int run_replay(const ReplayCliOptions& cli) {

@@ -45,7 +45,9 @@ void heading(const char* text) {
 void decision_lines(const FrameData& frame) {
     heading("Decision (thesis 4.4)");
     if (frame.decision.empty()) {
+        ImGui::PushTextWrapPos(0);
         ImGui::TextDisabled("not recorded (method %s; record --method adaptive)", frame.method.c_str());
+        ImGui::PopTextWrapPos();
         return;
     }
     const auto action = std::uint8_t(value_of(frame.decision, "action"));
@@ -94,7 +96,7 @@ void pair_lines(const FrameData& frame) {
 }
 
 void view_matrix(const FrameData& frame) {
-    const float cell = ImGui::GetFontSize() * 2.6f;
+    const float cell = std::min(ImGui::GetFontSize() * 2.6f, ImGui::GetContentRegionAvail().x / 3.0f);
     const ImVec2 at = ImGui::GetCursorScreenPos();
     ImDrawList* draw = ImGui::GetWindowDrawList();
     double largest = 0;
@@ -136,8 +138,6 @@ void gpu_lines(const FrameData& frame) {
                     pass.reverse != 0 ? "rev" : "fwd", pass.items_tested, pass.items_hidden, pass.queries,
                     static_cast<unsigned long long>(pass.samples_passed), pass.triangles_per_query);
     }
-    ImGui::TextDisabled("view matrix (rows: cull pass; columns: x y z)");
-    view_matrix(frame);
 }
 
 void panel(const FrameData& frame, const SessionView& session, const Rect& rect) {
@@ -163,6 +163,11 @@ void depth_column(const FrameData& frame, const SessionView& session, const Rect
     if (begin_window("depth", rect)) {
         heading("GPU cull depth buffers");
         const float width = ImGui::GetContentRegionAvail().x;
+        const float line = ImGui::GetTextLineHeightWithSpacing();
+        // The colour bar and the view matrix keep their place at the bottom; the thumbnails
+        // share what is above them.
+        const float reserve = line * 5.5f + std::min(ImGui::GetFontSize() * 2.6f, width / 3.0f) * 1.8f;
+        const float bottom = float(rect.h) - reserve;
         if (frame.depth_images.empty()) {
             ImGui::PushTextWrapPos(0);
             if (session.depth == "off" || session.depth.empty()) {
@@ -171,16 +176,24 @@ void depth_column(const FrameData& frame, const SessionView& session, const Rect
                 ImGui::TextDisabled("none on this frame (recorded: %s, GPU cull frames only)", session.depth.c_str());
             }
             ImGui::PopTextWrapPos();
+        } else {
+            ImGui::TextDisabled("axis: near .. far");
         }
+        const float each = frame.depth_images.empty()
+                               ? 0.0f
+                               : (bottom - ImGui::GetCursorPosY()) / float(frame.depth_images.size()) - line;
         for (std::size_t i = 0; i < frame.depth_images.size(); ++i) {
             const GpuDepthImage& image = frame.depth_images[i];
-            const float h = image.width > 0 ? width * float(image.height) / float(image.width) : width;
-            ImGui::Text("view %c, %s  near %s far %s", k_axes[image.view % 3], image.level == 0 ? "objects" : "triangles",
+            const float aspect = image.width > 0 ? float(image.height) / float(image.width) : 1.0f;
+            const float w = std::max(1.0f, std::min(width, each / aspect));
+            ImGui::Text("%c %s: %s .. %s", k_axes[image.view % 3], image.level == 0 ? "obj" : "tri",
                         format("%.3g", image.depth_near).c_str(), format("%.3g", image.depth_far).c_str());
-            ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(textures[i]->id())), ImVec2(width, h));
+            ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(textures[i]->id())),
+                         ImVec2(w, w * aspect));
         }
         // The legend bar: fixed range, window depth 0 (near) .. 1 (far), black = nothing drawn.
-        heading("depth (window, fixed range)");
+        ImGui::SetCursorPosY(std::max(ImGui::GetCursorPosY(), bottom));
+        ImGui::TextColored(ImVec4(0.55f, 0.80f, 1.0f, 1.0f), "depth (window, fixed range)");
         const ImVec2 at = ImGui::GetCursorScreenPos();
         const float bar_h = ImGui::GetFontSize();
         ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -192,11 +205,16 @@ void depth_column(const FrameData& frame, const SessionView& session, const Rect
         }
         ImGui::Dummy(ImVec2(width, bar_h));
         ImGui::Text("0 near");
-        ImGui::SameLine(width * 0.75f);
+        ImGui::SameLine(width * 0.72f);
         ImGui::Text("1 far");
-        ImGui::PushTextWrapPos(0);
-        ImGui::TextDisabled("near/far: input length units along the view axis; black: empty");
-        ImGui::PopTextWrapPos();
+        ImGui::TextDisabled("input length units; black: empty");
+        ImGui::TextColored(ImVec4(0.55f, 0.80f, 1.0f, 1.0f), "View matrix (4.2.1)");
+        if (frame.gpu.empty()) {
+            ImGui::TextDisabled("no GPU cull on this frame");
+        } else {
+            ImGui::TextDisabled("rows: pass; columns: x y z");
+            view_matrix(frame);
+        }
     }
     ImGui::End();
 }

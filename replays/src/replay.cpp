@@ -20,6 +20,20 @@
 namespace collidescope::replays {
 namespace {
 
+// Seconds since the last lap.
+class StepClock {
+public:
+    double lap() {
+        const auto now = std::chrono::steady_clock::now();
+        const double seconds = std::chrono::duration<double>(now - m_last).count();
+        m_last = now;
+        return seconds;
+    }
+
+private:
+    std::chrono::steady_clock::time_point m_last = std::chrono::steady_clock::now();
+};
+
 std::filesystem::path frame_file(const std::filesystem::path& dir, const char* prefix, std::uint32_t frame) {
     char name[48];
     std::snprintf(name, sizeof name, "%s_%04u.png", prefix, frame);
@@ -95,18 +109,23 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
     const auto start = std::chrono::steady_clock::now();
     summary.renderer = run_parallel(options.threads, rows.size(), options.width, options.height,
                                     [&](RenderThread& thread, std::uint64_t i) {
+        StepClock clock;
         FrameData frame;
         {
             const std::lock_guard<std::mutex> guard(reader_lock);
             frame = data.load(rows[i], i);
         }
+        const double read = clock.lap();
         const Camera camera = make_camera(options.camera, bounds, layout.scene, i, rows.size());
         thread.renderer->clear();
         thread.renderer->draw(frame, camera, options.layers);
         thread.overlay->draw_frame(frame, session, layout, options.layers);
+        const double draw = clock.lap();
         const std::vector<std::uint8_t> rgba = thread.renderer->read_rgba();
+        const double readback = clock.lap();
         const std::filesystem::path file = frame_file(options.output_dir, "frame", frame.frame);
         write_png(file, rgba, options.width, options.height);
+        const double png = clock.lap();
         SheetTile sheet_tile;
         if (on_sheet.count(i) != 0) {
             sheet_tile = {downscale(rgba, options.width, options.height, tile.width, tile.height), frame.frame,
@@ -114,6 +133,10 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
         }
         const std::lock_guard<std::mutex> guard(done_lock);
         summary.files[i] = file;
+        summary.read_seconds += read;
+        summary.draw_seconds += draw;
+        summary.readback_seconds += readback;
+        summary.png_seconds += png;
         if (i == 0) {
             for (const ObjectFrame& object : frame.objects) summary.triangles += object.triangles->size();
         }

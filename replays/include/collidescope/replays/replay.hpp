@@ -26,6 +26,13 @@ struct ReplaySummary {
     int threads = 0;                      ///< render threads used
     std::uint64_t triangles = 0;          ///< triangles of the first replayed frame
     std::string renderer;                 ///< GL_RENDERER
+    /// Seconds per step, summed over the render threads: reading the frame from the file (one
+    /// thread at a time), issuing the GL draws and the overlay, reading the image back (where
+    /// llvmpipe rasterises), encoding and writing the PNG.
+    double read_seconds = 0;
+    double draw_seconds = 0;
+    double readback_seconds = 0;
+    double png_seconds = 0;
     /// What the recording lacks that a layer would show ("no depth buffers in this recording", ...).
     std::vector<std::string> notes;
     /// --diff only: frames compared, and pairs found by only one of the two recordings.
