@@ -49,6 +49,7 @@ std::vector<std::string> methods_for(const BenchOptions& options, const Scene& s
     std::vector<std::string> methods;
     for (const std::string& method : available) {
         if ((method == "brute" || method == "gpu-naive") && scene.preset != "small") continue;
+        if (method == "adaptive") continue;  // the same as adaptive-<its policy>, which run anyway
         methods.push_back(method);
     }
     return methods;

@@ -4,6 +4,8 @@
 
 #include "bench_report.hpp"
 
+#include "collidescope/stats.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -19,7 +21,7 @@ constexpr double k_height = 420;
 constexpr double k_left = 70;     // room for the y tick labels
 constexpr double k_right = 150;   // room for the legend
 constexpr double k_top = 40;
-constexpr double k_bottom = 50;
+constexpr double k_bottom = 80;   // tick labels, then a mode strip per adaptive method
 constexpr const char* k_palette[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e",
                                      "#9467bd", "#8c564b", "#e377c2", "#17becf"};
 
@@ -97,6 +99,35 @@ void draw_series(std::ostringstream& svg, const Axes& axes, const BenchScene& sc
     }
 }
 
+// Below the axis, one strip per adaptive method: the mode in force on each frame (Mode 1
+// AABB blue, the hybrid framework green, Mode 2 GPU orange), like the thesis's figures mark it.
+void draw_mode_strips(std::ostringstream& svg, const Axes& axes, const BenchScene& scene) {
+    int strip = 0;
+    const double half = axes.x1 > axes.x0 ? 0.5 * (axes.px(axes.x0 + 1) - axes.px(axes.x0)) : 2.0;
+    for (const std::string& method : scene.methods) {
+        if (!is_adaptive_method(method)) continue;
+        const double y = k_height - k_bottom + 26 + 9.0 * strip++;
+        for (const BenchFrame& frame : scene.frames) {
+            if (frame.method != method || frame.mode == 0) continue;
+            const char* colour = frame.mode == 2 ? "#fd8d3c" : frame.action == k_action_hybrid ? "#74c476" : "#9ecae1";
+            svg << "<rect x=\"" << axes.px(frame.frame) - half << "\" y=\"" << y << "\" width=\"" << 2 * half
+                << "\" height=\"7\" fill=\"" << colour << "\"/>\n";
+        }
+        svg << "<text x=\"" << k_width - k_right + 6 << "\" y=\"" << y + 7 << "\" font-size=\"10\">mode: " << method
+            << "</text>\n";
+    }
+    if (strip > 0) {  // the strips' key, under the legend
+        const double y = k_top + 20.0 * static_cast<double>(scene.methods.size()) + 16;
+        const std::pair<const char*, const char*> keys[] = {
+            {"#9ecae1", "Mode 1 (AABB)"}, {"#74c476", "hybrid"}, {"#fd8d3c", "Mode 2 (GPU)"}};
+        for (std::size_t k = 0; k < std::size(keys); ++k) {
+            svg << "<rect x=\"" << k_width - k_right + 12 << "\" y=\"" << y + 14.0 * k << "\" width=\"24\" height=\"7\" fill=\""
+                << keys[k].first << "\"/>\n<text x=\"" << k_width - k_right + 42 << "\" y=\"" << y + 14.0 * k + 7
+                << "\" font-size=\"10\">" << keys[k].second << "</text>\n";
+        }
+    }
+}
+
 }  // namespace
 
 std::string plot_svg(const BenchScene& scene) {
@@ -122,6 +153,7 @@ std::string plot_svg(const BenchScene& scene) {
         << " triangles): time per frame</text>\n";
     draw_axes(svg, axes, y_step, nice_step(x1 - x0, 8));
     draw_series(svg, axes, scene);
+    draw_mode_strips(svg, axes, scene);
     svg << "</svg>\n";
     return svg.str();
 }

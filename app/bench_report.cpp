@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <limits>
 #include <sstream>
 
@@ -72,6 +73,27 @@ std::vector<BenchSummary> summarize(const std::vector<BenchScene>& scenes) {
         for (std::size_t i = first; i < rows.size(); ++i) {
             rows[i].ratio = fastest > 0 ? rows[i].total_ms / fastest : 1.0;
         }
+        // The oracle-best: per frame, the fastest fixed method.
+        std::map<std::uint32_t, double> best;
+        for (const BenchFrame& frame : scene.frames) {
+            if (is_adaptive_method(frame.method)) continue;
+            auto [it, inserted] = best.try_emplace(frame.frame, frame.total_ms());
+            if (!inserted) it->second = std::min(it->second, frame.total_ms());
+        }
+        double oracle = 0;
+        for (const auto& [frame, ms] : best) oracle += ms;
+        for (std::size_t i = first; i < rows.size(); ++i) {
+            if (!is_adaptive_method(rows[i].method)) continue;
+            rows[i].oracle_ratio = oracle > 0 ? rows[i].total_ms / oracle : 0;
+            std::uint8_t last_mode = 0;
+            for (const BenchFrame& frame : scene.frames) {
+                if (frame.method != rows[i].method) continue;
+                rows[i].mode2_frames += frame.mode == 2 ? 1 : 0;
+                rows[i].hybrid_frames += frame.action == k_action_hybrid ? 1 : 0;
+                rows[i].switches += last_mode != 0 && frame.mode != last_mode ? 1 : 0;
+                last_mode = frame.mode;
+            }
+        }
     }
     return rows;
 }
@@ -102,25 +124,31 @@ void write_frames_csv(const std::filesystem::path& file, const std::vector<Bench
 void write_summary_csv(const std::filesystem::path& file, const std::vector<BenchSummary>& rows) {
     std::ostringstream out;
     out << "scene,preset,method,frames,median_ms,total_ms,ratio_to_fastest,colliding_pairs,"
-           "candidate_pairs\n";
+           "candidate_pairs,oracle_ratio,mode2_frames,hybrid_frames,switches\n";
     for (const BenchSummary& row : rows) {
         out << row.scene << ',' << row.preset << ',' << row.method << ',' << row.frames << ','
             << fixed(row.median_ms, 4) << ',' << fixed(row.total_ms, 4) << ',' << fixed(row.ratio, 3)
-            << ',' << row.colliding_pairs << ',' << row.candidate_pairs << '\n';
+            << ',' << row.colliding_pairs << ',' << row.candidate_pairs << ',' << fixed(row.oracle_ratio, 3) << ','
+            << row.mode2_frames << ',' << row.hybrid_frames << ',' << row.switches << '\n';
     }
     write_text_file(file, out.str());
 }
 
 void print_table(std::ostream& out, const std::vector<BenchSummary>& rows) {
     char line[256];
-    std::snprintf(line, sizeof line, "%-12s %-10s %6s %11s %12s %9s %14s\n", "scene", "method",
-                  "frames", "median ms", "total ms", "x fastest", "colliding");
+    std::snprintf(line, sizeof line, "%-12s %-16s %6s %11s %12s %9s %14s %9s %7s\n", "scene", "method",
+                  "frames", "median ms", "total ms", "x fastest", "colliding", "x oracle", "mode 2");
     out << line;
     for (const BenchSummary& row : rows) {
         const std::string scene = row.scene + ":" + row.preset;
-        std::snprintf(line, sizeof line, "%-12s %-10s %6u %11.3f %12.3f %9.2f %14llu\n",
+        char oracle[32] = "", mode2[32] = "";
+        if (is_adaptive_method(row.method)) {
+            std::snprintf(oracle, sizeof oracle, "%.3f", row.oracle_ratio);
+            std::snprintf(mode2, sizeof mode2, "%.0f%%", row.frames ? 100.0 * row.mode2_frames / row.frames : 0.0);
+        }
+        std::snprintf(line, sizeof line, "%-12s %-16s %6u %11.3f %12.3f %9.2f %14llu %9s %7s\n",
                       scene.c_str(), row.method.c_str(), row.frames, row.median_ms, row.total_ms,
-                      row.ratio, static_cast<unsigned long long>(row.colliding_pairs));
+                      row.ratio, static_cast<unsigned long long>(row.colliding_pairs), oracle, mode2);
         out << line;
     }
 }
@@ -140,12 +168,13 @@ void write_index_html(const std::filesystem::path& file, const std::vector<Bench
            "<p>Times are the median over the repeats of each frame; every method returned the "
            "same pairs on every frame unless a mismatch is listed below.</p>\n<table>\n"
            "<tr><th>scene</th><th>method</th><th>frames</th><th>median ms</th><th>total ms</th>"
-           "<th>x fastest</th><th>colliding pairs</th></tr>\n";
+           "<th>x fastest</th><th>colliding pairs</th><th>x oracle</th><th>mode 2 frames</th></tr>\n";
     for (const BenchSummary& row : rows) {
         out << "<tr><td>" << row.scene << ':' << row.preset << "</td><td>" << row.method << "</td><td>"
             << row.frames << "</td><td>" << fixed(row.median_ms, 3) << "</td><td>"
             << fixed(row.total_ms, 3) << "</td><td>" << fixed(row.ratio, 2) << "</td><td>"
-            << row.colliding_pairs << "</td></tr>\n";
+            << row.colliding_pairs << "</td><td>" << (is_adaptive_method(row.method) ? fixed(row.oracle_ratio, 3) : "")
+            << "</td><td>" << (is_adaptive_method(row.method) ? std::to_string(row.mode2_frames) : "") << "</td></tr>\n";
     }
     out << "</table>\n";
     for (const BenchScene& scene : scenes) {

@@ -23,7 +23,16 @@ struct BenchSummary {
     double ratio = 0;           ///< total_ms / the scene's fastest method's total_ms
     std::uint64_t colliding_pairs = 0;
     std::uint64_t candidate_pairs = 0;
+    /// Adaptive methods (names starting "adaptive"): total_ms over the oracle-best, the sum
+    /// over frames of the fastest fixed method's time on that frame (issue 7); 0 otherwise.
+    double oracle_ratio = 0;
+    std::uint32_t mode2_frames = 0;   ///< adaptive methods: frames run in Mode 2
+    std::uint32_t hybrid_frames = 0;  ///< adaptive methods: frames the hybrid framework served
+    std::uint32_t switches = 0;       ///< adaptive methods: mode changes
 };
+
+/// True for the methods that choose per frame (their rows get an oracle ratio).
+inline bool is_adaptive_method(const std::string& method) { return method.rfind("adaptive", 0) == 0; }
 
 /// Summaries of every scene and method, in run order.
 std::vector<BenchSummary> summarize(const std::vector<BenchScene>& scenes);

@@ -61,6 +61,7 @@ BenchScene run_bench_scene(const Scene& scene, const BenchPlan& plan,
     const std::uint32_t frames = plan.end - plan.begin;
     Samples samples(methods, std::vector<std::vector<std::vector<double>>>(frames));
     std::vector<std::vector<std::vector<std::uint64_t>>> counts(methods, std::vector<std::vector<std::uint64_t>>(frames));
+    std::vector<std::vector<std::pair<std::uint8_t, std::uint8_t>>> modes(methods, std::vector<std::pair<std::uint8_t, std::uint8_t>>(frames, {0, 255}));
 
     for (int rep = 0; rep < plan.repeat; ++rep) {
         // Fresh pipelines each repeat: methods keep state (trees, GPU state) across frames.
@@ -72,6 +73,7 @@ BenchScene run_bench_scene(const Scene& scene, const BenchPlan& plan,
             config.threads = plan.threads;
             config.gpu = plan.gpu;
             config.aabb = plan.aabb;
+            config.adaptive = plan.adaptive;
             pipelines.push_back(std::make_unique<Pipeline>(config));
         }
         for (std::uint32_t f = 0; f < frames; ++f) {
@@ -84,6 +86,9 @@ BenchScene run_bench_scene(const Scene& scene, const BenchPlan& plan,
                 FrameResult frame_result = pipelines[m]->process(frame);
                 samples[m][f].push_back(stage_values(frame_result.stats.ms));
                 if (rep == 0) counts[m][f] = count_values(frame_result.stats.counts);
+                if (rep == 0 && frame_result.stats.decision) {
+                    modes[m][f] = {frame_result.stats.decision->mode, frame_result.stats.decision->action};
+                }
                 if (m == 0) {
                     reference = std::move(frame_result.colliding_pairs);
                     continue;
@@ -109,7 +114,8 @@ BenchScene run_bench_scene(const Scene& scene, const BenchPlan& plan,
                 for (const std::vector<double>& run : samples[m][f]) values.push_back(run[s]);
                 ms[s] = median(std::move(values));
             }
-            result.frames.push_back({plan.methods[m], plan.begin + f, std::move(ms), counts[m][f]});
+            result.frames.push_back({plan.methods[m], plan.begin + f, std::move(ms), counts[m][f], modes[m][f].first,
+                                     modes[m][f].second});
         }
     }
     return result;

@@ -4,6 +4,7 @@
 // same for all methods.
 
 #include "collidescope/aabb_options.hpp"
+#include "collidescope/adaptive_options.hpp"
 #include "collidescope/gpu_cull.hpp"
 #include "collidescope/scene.hpp"
 #include "collidescope/types.hpp"
@@ -25,6 +26,7 @@ struct BenchPlan {
     bool self_collision = false;
     GpuCullConfig gpu;                 ///< options of the GPU cull methods
     AabbOptions aabb;                  ///< options of the AABB hierarchies
+    AdaptiveOptions adaptive;          ///< options of the decision system (adaptive methods)
 };
 
 /// One method on one frame: per-stage milliseconds (median over the repeats, in
@@ -34,6 +36,8 @@ struct BenchFrame {
     std::uint32_t frame = 0;
     std::vector<double> ms;
     std::vector<std::uint64_t> counts;
+    std::uint8_t mode = 0;       ///< adaptive methods: the mode in force (1 or 2) in the first run; 0 otherwise
+    std::uint8_t action = 255;   ///< adaptive methods: DecisionAction of the first run; 255 otherwise
     double total_ms() const { return ms.back(); }  ///< `total` is the last stage
 };
 

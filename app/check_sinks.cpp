@@ -95,6 +95,22 @@ void StatsWriter::on_frame(const FrameReport& report) {
                         {"background_swaps", aabb.background_swaps},
                         {"tree_quality", aabb.tree_quality}};
     }
+    if (report.stats.hybrid) {
+        nlohmann::ordered_json hybrid;
+        for_each_hybrid_value(*report.stats.hybrid, [&](const char* name, double value, const char*) {
+            hybrid[name] = value;
+        });
+        line["hybrid"] = std::move(hybrid);
+    }
+    if (report.stats.decision) {
+        const DecisionInfo& decision = *report.stats.decision;
+        nlohmann::ordered_json json;
+        for_each_decision_value(decision, [&](const char* name, double value, const char*) { json[name] = value; });
+        json["policy"] = decision.policy == 0 ? "thesis" : "cost";
+        json["action"] = decision_action_name(decision.action);
+        json["reason"] = decision_reason_name(decision.reason);
+        line["decision"] = std::move(json);
+    }
     m_out << line.dump() << '\n';
 }
 
@@ -104,14 +120,23 @@ void SummaryPrinter::on_frame(const FrameReport& report) {
     m_frames_colliding += pairs > 0 ? 1 : 0;
     m_colliding_pairs += pairs;
     m_total_ms += report.stats.ms.total;
+    if (report.stats.decision) {
+        ++m_mode_frames[report.stats.decision->mode == 2 ? 2 : 1];
+        m_switches += report.stats.decision->switched ? 1 : 0;
+    }
     if (m_quiet) return;
     m_progress.log("frame " + std::to_string(report.stats.frame) + ": " + std::to_string(pairs) +
                    " colliding pairs, " + format_ms(report.stats.ms.total) + " ms");
 }
 
 std::string SummaryPrinter::total_line() const {
+    const std::string modes =
+        m_mode_frames[1] + m_mode_frames[2] == 0
+            ? std::string()
+            : " (mode 1: " + std::to_string(m_mode_frames[1]) + " frames, mode 2: " + std::to_string(m_mode_frames[2]) +
+                  " frames, " + std::to_string(m_switches) + " switches)";
     return "total: " + std::to_string(m_frames) + " frames, " + std::to_string(m_frames_colliding) +
-           " with collisions, " + std::to_string(m_colliding_pairs) + " colliding pairs, " +
+           " with collisions, " + std::to_string(m_colliding_pairs) + " colliding pairs" + modes + ", " +
            format_ms(m_total_ms) + " ms";
 }
 

@@ -4,6 +4,8 @@
 
 #include "scene_input.hpp"
 
+#include <stdexcept>
+
 namespace collidescope::app {
 
 void add_engine_options(CLI::App& command, EngineOptions& options) {
@@ -14,6 +16,12 @@ void add_engine_options(CLI::App& command, EngineOptions& options) {
     command.add_flag("--no-self", options.no_self, "Self-collision off (default: the scene's setting)")->excludes(self);
     command.add_option("--threads", options.threads, "Worker threads (0 = all hardware threads)")
         ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+    command.add_option("--policy", options.policy,
+                       "Decision policy of --method adaptive: thesis (Algorithms 4 and 5) or cost (docs/decision.md)")
+        ->check(CLI::IsMember({"thesis", "cost"}))
+        ->capture_default_str();
+    command.add_option("--adaptive-seed", options.adaptive_seed, "Seed of the decision system's exploration draws")
         ->capture_default_str();
     add_gpu_options(command, options.gpu);
     add_aabb_options(command, options.aabb);
@@ -26,7 +34,15 @@ PipelineConfig pipeline_config(const EngineOptions& options, const Scene& scene)
     config.threads = options.threads;
     config.gpu = gpu_config(options.gpu);
     config.aabb = aabb_options(options.aabb);
+    config.adaptive.policy = parse_policy(options.policy);
+    config.adaptive.seed = options.adaptive_seed;
     return config;
+}
+
+AdaptivePolicy parse_policy(const std::string& name) {
+    if (name == "thesis") return AdaptivePolicy::Thesis;
+    if (name == "cost") return AdaptivePolicy::Cost;
+    throw std::invalid_argument("unknown policy '" + name + "' (known: thesis, cost)");
 }
 
 }  // namespace collidescope::app

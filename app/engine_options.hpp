@@ -17,13 +17,18 @@ namespace collidescope::app {
 
 /// What the options hold as parsed.
 struct EngineOptions {
-    std::string method = "brute";
+    std::string method = "adaptive";
     bool self = false;     ///< force self-collision on
     bool no_self = false;  ///< force self-collision off
     int threads = 0;       ///< 0 = all hardware threads
     GpuOptions gpu;
     AabbCliOptions aabb;
+    std::string policy = "cost";  ///< --policy: the decision system's policy (method adaptive)
+    std::uint64_t adaptive_seed = 1;  ///< --adaptive-seed: seeds the exploration draws
 };
+
+/// "thesis" or "cost" -> the policy; throws std::invalid_argument otherwise.
+AdaptivePolicy parse_policy(const std::string& name);
 
 /// Adds the options to `command`, writing into `options` (which must outlive parsing).
 void add_engine_options(CLI::App& command, EngineOptions& options);

@@ -83,7 +83,8 @@ TEST(CheckCli, StatsJsonLinesOneObjectPerFrame) {
         SCOPED_TRACE(line);
         const nlohmann::json stats = nlohmann::json::parse(line);
         EXPECT_EQ(stats.at("frame"), frame);
-        EXPECT_EQ(stats.at("method"), "brute");
+        EXPECT_EQ(stats.at("method"), "adaptive");  // the default method
+        EXPECT_TRUE(stats.at("decision").at("reason").is_string());
         for (const char* stage : {"update", "object_level", "cull", "narrow", "total"}) {
             ASSERT_TRUE(stats.at("ms").at(stage).is_number()) << stage;
             EXPECT_GE(stats.at("ms").at(stage).get<double>(), 0.0) << stage;

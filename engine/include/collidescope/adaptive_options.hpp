@@ -19,12 +19,14 @@ struct AdaptiveOptions {
     /// Thesis: what inc_explore adds in Mode 2 (capped at max_exploration).
     double exploration_step = 0.05;
     double max_exploration = 0.5;
-    /// Cost: frames after which an estimate is stale and re-probed (doubles after each probe
-    /// that lost, up to max_probe_interval).
-    std::uint32_t probe_interval = 16;
-    std::uint32_t max_probe_interval = 256;
+    /// Cost: the share of the run's time that probing each non-chosen method may cost: a
+    /// method is re-measured once probe_budget x (ms since it last ran) exceeds what running
+    /// it instead of the cheapest is predicted to cost extra.
+    double probe_budget = 0.03;
     /// Cost: weight of a new measurement in an estimate (exponential moving average).
     double smoothing = 0.5;
+    /// Cost: whether the hybrid framework is among the candidates.
+    bool use_hybrid = true;
     std::uint64_t seed = 1;  ///< seeds the exploration draws
 };
 

@@ -15,80 +15,124 @@ double steady_ms() {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+// Objects that appear in some object pair this frame (self pairs only with self-collision).
+std::vector<std::uint32_t> used_objects(const FrameContext& context) {
+    std::vector<bool> used(context.frame.objects.size(), false);
+    for (const ObjectPair& pair : context.object_pairs) {
+        if (pair.a == pair.b && !context.self_collision) continue;
+        used[pair.a] = used[pair.b] = true;
+    }
+    std::vector<std::uint32_t> objects;
+    for (std::uint32_t o = 0; o < used.size(); ++o) {
+        if (used[o]) objects.push_back(o);
+    }
+    return objects;
+}
+
+std::vector<WorkItem> roots(const FrameContext& context, const ObjectTrees& trees) {
+    std::vector<WorkItem> items;
+    for (const ObjectPair& pair : context.object_pairs) {
+        if (pair.a == pair.b && !context.self_collision) continue;
+        if (trees.at(pair.a).tree.empty() || trees.at(pair.b).tree.empty()) continue;
+        items.push_back({pair.a, pair.b, 0, 0});
+    }
+    return items;
+}
+
 class AabbMethod final : public Method {
 public:
-    explicit AabbMethod(AabbConfig config) : m_config(std::move(config)), m_trees(m_config) {
-        if (!m_config.clock_ms) m_config.clock_ms = &steady_ms;
-    }
+    explicit AabbMethod(AabbConfig config) : m_culler(std::move(config)) {}
 
     std::string_view name() const override { return "aabb"; }
 
     void detect(const FrameContext& context, std::vector<TrianglePair>& pairs, FrameStats& stats) override {
-        const Frame& frame = context.frame;
-        const std::vector<std::uint32_t> used = used_objects(context);
-        AabbFrameInfo info;
-        const double start = now();
-        m_trees.begin_frame(frame.objects.size());
-        m_trees.swap_finished(frame, m_config.background == BackgroundMode::NextFrame, info);
-        m_trees.build_missing(frame, used, info);
-        const double built = now();
-        m_trees.refit_rest(frame, used);
-        const double refitted = now();
-        // The quality the policy judges: after refit, before any rebuild resets it.
-        for (const std::uint32_t object : used) info.tree_quality = std::max(info.tree_quality, m_trees.at(object).quality);
-        m_trees.apply_policy(frame, used, m_last_detection_ms, info);
-        const double rebuilt = now();
         std::vector<TrianglePair> candidates;
-        const TraversalStats traversal = traverse(roots(context), m_trees.views(frame, used), m_config.traversal, candidates);
-        const double traversed = now();
-        narrow_phase(frame, candidates, pairs, stats);
-        const double narrowed = now();
-
-        stats.ms.rebuild += (built - start) + (rebuilt - refitted);
-        stats.ms.refit += refitted - built;
-        stats.ms.traversal += traversed - rebuilt;
-        stats.ms.cull += traversed - start;
-        stats.counts.box_tests += traversal.box_tests;
-        stats.counts.candidate_pairs += traversal.candidate_pairs;
-        stats.counts.nodes_visited += traversal.nodes_visited;
-        stats.counts.rebuilds += info.rebuilt_objects + info.background_started;
-        stats.aabb = info;
-        m_last_detection_ms = narrowed - rebuilt;
+        m_culler.cull(context, candidates, stats);
+        const double traversal_ms = stats.ms.traversal;
+        narrow_phase(context.frame, candidates, pairs, stats);
+        m_culler.set_detection_ms(traversal_ms + stats.ms.narrow);
     }
 
 private:
-    double now() const { return m_config.clock_ms(); }
-
-    // Objects that appear in some object pair this frame (self pairs only with self-collision).
-    static std::vector<std::uint32_t> used_objects(const FrameContext& context) {
-        std::vector<bool> used(context.frame.objects.size(), false);
-        for (const ObjectPair& pair : context.object_pairs) {
-            if (pair.a == pair.b && !context.self_collision) continue;
-            used[pair.a] = used[pair.b] = true;
-        }
-        std::vector<std::uint32_t> objects;
-        for (std::uint32_t o = 0; o < used.size(); ++o) {
-            if (used[o]) objects.push_back(o);
-        }
-        return objects;
-    }
-
-    std::vector<WorkItem> roots(const FrameContext& context) const {
-        std::vector<WorkItem> items;
-        for (const ObjectPair& pair : context.object_pairs) {
-            if (pair.a == pair.b && !context.self_collision) continue;
-            if (m_trees.at(pair.a).tree.empty() || m_trees.at(pair.b).tree.empty()) continue;
-            items.push_back({pair.a, pair.b, 0, 0});
-        }
-        return items;
-    }
-
-    AabbConfig m_config;
-    ObjectTrees m_trees;
-    double m_last_detection_ms = 0;
+    AabbCuller m_culler;
 };
 
 }  // namespace
+
+AabbCuller::AabbCuller(AabbConfig config) : m_config(std::move(config)) {
+    if (!m_config.clock_ms) m_config.clock_ms = &steady_ms;
+    m_trees = std::make_unique<ObjectTrees>(m_config);
+}
+
+AabbCuller::~AabbCuller() = default;
+
+TraversalStats AabbCuller::cull(const FrameContext& context, std::vector<TrianglePair>& candidates,
+                                FrameStats& stats) {
+    const Frame& frame = context.frame;
+    m_used = used_objects(context);
+    AabbFrameInfo info = stats.aabb.value_or(AabbFrameInfo{});
+    const double start = now();
+    m_trees->begin_frame(frame.objects.size());
+    m_trees->swap_finished(frame, m_config.background == BackgroundMode::NextFrame, info);
+    m_trees->build_missing(frame, m_used, info);
+    const double built = now();
+    m_trees->refit_rest(frame, m_used);
+    const double refitted = now();
+    // The quality the policy judges: after refit, before any rebuild resets it.
+    for (const std::uint32_t object : m_used) info.tree_quality = std::max(info.tree_quality, m_trees->at(object).quality);
+    m_trees->apply_policy(frame, m_used, m_last_detection_ms, info);
+    const double rebuilt = now();
+    const TraversalStats traversal = traverse(roots(context, *m_trees), m_trees->views(frame, m_used),
+                                              m_config.traversal, candidates);
+    const double traversed = now();
+
+    stats.ms.rebuild += (built - start) + (rebuilt - refitted);
+    stats.ms.refit += refitted - built;
+    stats.ms.traversal += traversed - rebuilt;
+    stats.ms.cull += traversed - start;
+    stats.counts.box_tests += traversal.box_tests;
+    stats.counts.candidate_pairs += traversal.candidate_pairs;
+    stats.counts.nodes_visited += traversal.nodes_visited;
+    stats.counts.rebuilds += info.rebuilt_objects + info.background_started;
+    stats.aabb = info;
+    TraversalStats result = traversal;
+    result.ms = traversed - rebuilt;
+    return result;
+}
+
+TraversalStats AabbCuller::traverse_culled(const FrameContext& context,
+                                           const std::vector<std::vector<std::uint8_t>>& alive,
+                                           std::vector<TrianglePair>& candidates) {
+    std::vector<MeshView> views = m_trees->views(context.frame, m_used);
+    std::vector<std::vector<std::uint8_t>> alive_nodes(views.size());
+    for (const std::uint32_t object : m_used) {
+        if (object >= alive.size() || alive[object].empty() || m_trees->at(object).tree.empty()) continue;
+        alive_nodes[object] = percolate_alive(m_trees->at(object).tree, alive[object]);
+        views[object].alive_nodes = alive_nodes[object];
+        views[object].alive_triangles = alive[object];
+    }
+    std::vector<WorkItem> items;
+    for (const ObjectPair& pair : context.object_pairs) {
+        if (pair.a == pair.b) continue;
+        if (alive_nodes[pair.a].empty() || alive_nodes[pair.b].empty()) continue;
+        if (!alive_nodes[pair.a][0] || !alive_nodes[pair.b][0]) continue;
+        items.push_back({pair.a, pair.b, 0, 0});
+    }
+    const double start = now();
+    TraversalStats stats = traverse(std::move(items), views, m_config.traversal, candidates);
+    stats.ms = now() - start;
+    return stats;
+}
+
+bool AabbCuller::start_rebuild(const Frame& frame, AabbFrameInfo& info) {
+    return m_trees->start_rebuild(frame, m_used, info);
+}
+
+bool AabbCuller::rebuild_in_flight() const { return m_trees->rebuild_in_flight(); }
+
+bool AabbCuller::rebuild_finished() const { return m_trees->rebuild_finished(); }
+
+double AabbCuller::rebuild_average_ms() const { return m_trees->rebuild_average_ms(m_used); }
 
 std::unique_ptr<Method> make_aabb_method(AabbConfig config) {
     return std::make_unique<AabbMethod>(std::move(config));

@@ -51,6 +51,55 @@ struct AabbConfig {
     std::function<void(const TreeEvent&)> on_tree;
 };
 
+class ObjectTrees;
+
+/// Mode 1's culling without the narrow phase: the per-object trees kept across frames and the
+/// traversal. The `aabb` method is this plus the narrow phase; `hybrid` and `adaptive` share
+/// one with the methods they run, so the trees stay warm whichever of them serves a frame.
+class AabbCuller {
+public:
+    explicit AabbCuller(AabbConfig config);
+    ~AabbCuller();
+    AabbCuller(const AabbCuller&) = delete;
+    AabbCuller& operator=(const AabbCuller&) = delete;
+
+    /// Swaps in finished worker trees, builds missing ones, refits the rest, asks the rebuild
+    /// policy, then traverses: appends every candidate pair (canonical, unordered) and fills
+    /// ms.rebuild/refit/traversal/cull, counts box_tests/candidate_pairs/nodes_visited/
+    /// rebuilds and stats.aabb.
+    TraversalStats cull(const FrameContext& context, std::vector<TrianglePair>& candidates, FrameStats& stats);
+    /// The hybrid framework's final traversal (thesis 4.3, Figure 4.7 D): tree-vs-tree over
+    /// the inter-object pairs of the last cull()'s frame (which must be `context`'s), on the
+    /// trees culled by `alive` (per object, per triangle id: 1 survived; an empty entry: the
+    /// object has no survivor). Appends the candidate pairs among the survivors.
+    TraversalStats traverse_culled(const FrameContext& context, const std::vector<std::vector<std::uint8_t>>& alive,
+                                   std::vector<TrianglePair>& candidates);
+    /// The last frame's detection time (traversal + narrow phase) for the thesis rebuild rule.
+    void set_detection_ms(double ms) { m_last_detection_ms = ms; }
+    /// Starts rebuilding, on the worker, every tree the last culled frame used, from `frame`'s
+    /// positions (thesis Algorithm 4 step 5, "Rebuild In Thread"); the next cull() after it
+    /// finished swaps them in and refits them to its frame. Records the start in `info`.
+    /// False when a rebuild is already in flight or there is nothing to rebuild.
+    bool start_rebuild(const Frame& frame, AabbFrameInfo& info);
+    /// A worker rebuild is running, or finished and not yet swapped in.
+    bool rebuild_in_flight() const;
+    /// A worker rebuild finished and waits to be swapped in by the next cull().
+    bool rebuild_finished() const;
+    /// AABB Rebuild Average (thesis Table 4.4): over the trees the last frame used, the sum of
+    /// each one's mean build time, ms; 0 before any build.
+    double rebuild_average_ms() const;
+    /// The objects the last cull() used.
+    const std::vector<std::uint32_t>& used() const { return m_used; }
+
+private:
+    double now() const { return m_config.clock_ms(); }
+
+    AabbConfig m_config;
+    std::unique_ptr<ObjectTrees> m_trees;
+    std::vector<std::uint32_t> m_used;
+    double m_last_detection_ms = 0;
+};
+
 /// Makes the `aabb` method.
 std::unique_ptr<Method> make_aabb_method(AabbConfig config);
 

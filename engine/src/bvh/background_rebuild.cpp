@@ -27,6 +27,10 @@ void BackgroundRebuild::start(std::vector<RebuildJob> jobs) {
     });
 }
 
+bool BackgroundRebuild::ready() const {
+    return m_result.valid() && m_result.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+}
+
 std::optional<std::vector<RebuiltTree>> BackgroundRebuild::take(bool wait) {
     if (!m_result.valid()) return std::nullopt;
     if (!wait && m_result.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return std::nullopt;

@@ -44,6 +44,8 @@ public:
 
     /// True while a batch is running or finished but not taken.
     bool busy() const { return m_result.valid(); }
+    /// True when a batch has finished and waits to be taken.
+    bool ready() const;
     /// Starts building `jobs` on a worker thread. Precondition: !busy().
     void start(std::vector<RebuildJob> jobs);
     /// The finished batch, or nothing when none is in flight or (without `wait`) it is still

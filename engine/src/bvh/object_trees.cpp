@@ -46,6 +46,8 @@ void ObjectTrees::swap_finished(const Frame& frame, bool wait, AabbFrameInfo& in
         slot.tree = std::move(rebuilt.tree);
         slot.topology = rebuilt.job.topology;
         slot.build_ms = rebuilt.stats.ms;
+        slot.build_ms_sum += rebuilt.stats.ms;
+        ++slot.builds;
         slot.quality = 1;
         ++info.background_swaps;
         if (m_config.on_tree) {
@@ -65,6 +67,8 @@ void ObjectTrees::build(const Frame& frame, std::span<const std::uint32_t> objec
             const BuildStats stats = build_tree(mesh.topology->triangles, mesh.vertices, m_config.build, slot.tree);
             slot.topology = mesh.topology;
             slot.build_ms = stats.ms;
+            slot.build_ms_sum += stats.ms;
+            ++slot.builds;
             slot.quality = 1;
             slot.fitted = slot.fresh = true;
         }
@@ -134,6 +138,33 @@ void ObjectTrees::apply_policy(const Frame& frame, std::span<const std::uint32_t
         info.background_started += static_cast<std::uint32_t>(chosen.size());
     }
     info.rebuild_reasons |= bit(reason);
+}
+
+bool ObjectTrees::start_rebuild(const Frame& frame, std::span<const std::uint32_t> objects, AabbFrameInfo& info) {
+    if (m_background.busy()) return false;
+    std::vector<RebuildJob> jobs;
+    for (const std::uint32_t object : objects) {
+        if (object >= frame.objects.size() || object >= m_trees.size() || m_trees[object].tree.empty()) continue;
+        const ObjectFrame& mesh = frame.objects[object];
+        if (!same_topology(m_trees[object], mesh)) continue;  // the engine thread builds those
+        jobs.push_back({object, mesh.topology, mesh.vertices, frame.index, RebuildReason::Thesis});
+        m_trees[object].pending = true;
+    }
+    if (jobs.empty()) return false;
+    info.background_started += static_cast<std::uint32_t>(jobs.size());
+    info.rebuild_reasons |= bit(RebuildReason::Thesis);
+    m_background.start(std::move(jobs));
+    return true;
+}
+
+double ObjectTrees::rebuild_average_ms(std::span<const std::uint32_t> objects) const {
+    double sum = 0;
+    for (const std::uint32_t object : objects) {
+        if (object < m_trees.size() && m_trees[object].builds > 0) {
+            sum += m_trees[object].build_ms_sum / m_trees[object].builds;
+        }
+    }
+    return sum;
 }
 
 std::vector<MeshView> ObjectTrees::views(const Frame& frame, std::span<const std::uint32_t> used) const {

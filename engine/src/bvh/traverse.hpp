@@ -16,7 +16,16 @@ struct MeshView {
     const Tree* tree = nullptr;
     std::span<const TriIndices> triangles;
     std::span<const Vec3> vertices;
+    /// Optional marks (the hybrid framework's culled tree, thesis 4.3 step C): when set, a
+    /// node whose alive_nodes entry is 0 and a triangle whose alive_triangles entry is 0 are
+    /// skipped by tree-vs-tree traversal. Indexed by node and by triangle id.
+    std::span<const std::uint8_t> alive_nodes;
+    std::span<const std::uint8_t> alive_triangles;
 };
+
+/// Percolates triangle marks up `tree` (thesis 4.3 step C): a leaf is alive when one of its
+/// triangles is, an inner node when one of its children is. Returns one entry per node.
+std::vector<std::uint8_t> percolate_alive(const Tree& tree, std::span<const std::uint8_t> alive_triangles);
 
 /// A unit of traversal work. obj_a < obj_b: node_a of A against node_b of B. obj_a == obj_b
 /// and node_a == node_b: self-traversal below that node. obj_a == obj_b, node_a != node_b:

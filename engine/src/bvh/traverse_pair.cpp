@@ -18,9 +18,12 @@ void leaf_pair(const WorkItem& item, const MeshView& a, const Node& leaf_a, cons
     const bool cached = leaf_b.count <= k_cached;
     for (std::uint32_t j = 0; cached && j < leaf_b.count; ++j) boxes_b[j] = triangle_box(tris_b[j], b.vertices);
     const bool same_object = item.obj_a == item.obj_b;
+    const bool masked = !a.alive_triangles.empty() || !b.alive_triangles.empty();
     for (std::uint32_t i = 0; i < leaf_a.count; ++i) {
+        if (masked && !a.alive_triangles.empty() && !a.alive_triangles[ids_a[i]]) continue;
         const Aabb box_a = triangle_box(tris_a[i], a.vertices);
         for (std::uint32_t j = 0; j < leaf_b.count; ++j) {
+            if (masked && !b.alive_triangles.empty() && !b.alive_triangles[ids_b[j]]) continue;
             const Aabb box_b = cached ? boxes_b[j] : triangle_box(tris_b[j], b.vertices);
             if (!overlaps(box_a, box_b)) continue;
             candidates.push_back(same_object ? make_pair_ordered(item.obj_a, ids_a[i], item.obj_b, ids_b[j])
@@ -38,6 +41,10 @@ void step_pair(const WorkItem& item, std::span<const MeshView> meshes, std::vect
     const MeshView& b = meshes[item.obj_b];
     const Node& x = a.tree->nodes[item.node_a];
     const Node& y = b.tree->nodes[item.node_b];
+    if ((!a.alive_nodes.empty() && !a.alive_nodes[item.node_a]) ||
+        (!b.alive_nodes.empty() && !b.alive_nodes[item.node_b])) {
+        return;  // a culled subtree (hybrid framework): nothing of it is left to test
+    }
     ++stats.nodes_visited;
     ++stats.box_tests;
     if (!overlaps(x.box, y.box)) return;
@@ -55,6 +62,22 @@ void step_pair(const WorkItem& item, std::span<const MeshView> meshes, std::vect
         stack.push_back({item.obj_a, item.obj_b, item.node_a, item.node_b + 1});
         stack.push_back({item.obj_a, item.obj_b, item.node_a, y.index});
     }
+}
+
+std::vector<std::uint8_t> percolate_alive(const Tree& tree, std::span<const std::uint8_t> alive_triangles) {
+    std::vector<std::uint8_t> alive(tree.nodes.size(), 0);
+    // Preorder: children come after their parent, so a backward sweep sees them first.
+    for (std::size_t k = tree.nodes.size(); k-- > 0;) {
+        const Node& node = tree.nodes[k];
+        if (node.is_leaf()) {
+            for (std::uint32_t i = 0; i < node.count && !alive[k]; ++i) {
+                alive[k] = alive_triangles[tree.triangle_ids[node.index + i]];
+            }
+        } else {
+            alive[k] = alive[k + 1] | alive[node.index];
+        }
+    }
+    return alive;
 }
 
 }  // namespace collidescope::bvh

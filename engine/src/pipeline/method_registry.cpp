@@ -2,6 +2,7 @@
 
 #include "brute/brute_method.hpp"
 #include "bvh/aabb_method.hpp"
+#include "decision/adaptive_method.hpp"
 #include "gpucull/gpu_method.hpp"
 
 #include "collidescope/pipeline.hpp"
@@ -25,6 +26,23 @@ constexpr MethodEntry k_methods[] = {
          GpuCullConfig naive = config.gpu;
          naive.naive = true;
          return make_gpu_method(naive);
+     }},
+    {"aabb-thesis", [](const PipelineConfig& config) {  // the thesis's AABB baseline: 5.2.1's 3/4 rule
+         AabbOptions thesis = config.aabb;
+         thesis.rebuild = AabbRebuildRule::Thesis;
+         return make_aabb_method(thesis);
+     }},
+    {"hybrid", [](const PipelineConfig& config) { return decision::make_hybrid_method(config); }},
+    {"adaptive", [](const PipelineConfig& config) { return decision::make_adaptive_method(config); }},
+    {"adaptive-thesis", [](const PipelineConfig& config) {
+         PipelineConfig thesis = config;
+         thesis.adaptive.policy = AdaptivePolicy::Thesis;
+         return decision::make_adaptive_method(thesis);
+     }},
+    {"adaptive-cost", [](const PipelineConfig& config) {
+         PipelineConfig cost = config;
+         cost.adaptive.policy = AdaptivePolicy::Cost;
+         return decision::make_adaptive_method(cost);
      }},
 };
 
