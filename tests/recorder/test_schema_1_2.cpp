@@ -10,6 +10,7 @@
 #include "collidescope/recorder/recorder.hpp"
 #include "collidescope/recorder/schema.hpp"
 
+#include "collidescope/datasets.hpp"
 #include "collidescope/error.hpp"
 
 #include <gtest/gtest.h>
@@ -222,6 +223,35 @@ TEST(Schema12, ASchema11FileReadsTheNewGroupsAsEmpty) {
         EXPECT_TRUE(rec.depth_images(f).empty());
         expect_passes_equal(rec.gpu_passes(f), stats_of(f).gpu.value_or(GpuFrameInfo{}).passes, f);
     }
+}
+
+// The real GPU cull: what its reports held comes back, depth images on frames 0, 2, 4 only.
+TEST(Schema12, GpuMethodRecordingMatchesItsReports) {
+    TempDir dir;
+    const auto file = dir.path() / "run.h5";
+    const Scene scene = make_builtin_scene("C:small");
+    PipelineConfig config;
+    config.method = "gpu";
+    config.threads = 2;
+    config.gpu.resolution = 64;
+    config.gpu.depth_every = 2;
+    const auto frames = testing::record_in_process(scene, file, 0, 6, config);
+    const recorder::Recording rec(file);
+    ASSERT_EQ(rec.frames_complete(), frames.size());
+    const auto gpu = rec.frame_values("gpu");
+    std::size_t images = 0;
+    for (std::size_t r = 0; r < frames.size(); ++r) {
+        const FrameStats& stats = frames[r].stats;
+        ASSERT_TRUE(stats.gpu.has_value());
+        expect_values(gpu, r, stats.gpu, [](const auto& i, auto&& v) { for_each_gpu_value(i, v); });
+        expect_passes_equal(rec.gpu_passes(r), stats.gpu->passes, r);
+        EXPECT_EQ(rec.survivors(r), stats.gpu->survivors) << "row " << r;
+        expect_depth_equal(rec.depth_images(r), stats.gpu->depth_images, r);
+        if (stats.frame % 2 != 0) EXPECT_TRUE(stats.gpu->depth_images.empty()) << "frame " << stats.frame;
+        images += stats.gpu->depth_images.size();
+    }
+    EXPECT_GT(images, 0u);
+    EXPECT_TRUE(std::isnan(rec.frame_values("decision").at(0).values[0])) << "no decision system: NaN";
 }
 
 }  // namespace

@@ -79,7 +79,8 @@ public:
         m_context->make_current();
         GpuFrameInfo info;
         info.renderer = m_context->renderer();
-        const gpucull::CullPlan plan = frame_plan();
+        gpucull::CullPlan plan = frame_plan();
+        plan.capture_depth = m_config.depth_every > 0 && context.frame.index % m_config.depth_every == 0;
         std::vector<PcsObject> pcs = initial_pcs(context);
         gpucull::CullTimes times;
         gpucull::cull_pcs(context.frame, pcs, plan, m_renderer, info, times);

@@ -114,6 +114,24 @@ void read_pass(const ViewSet& set, Level level, bool reverse, const CullPlan& pl
     pass.triangles_per_query = flags ? 0 : (level == Objects ? 0 : plan.triangles_per_query);
 }
 
+// The depth buffer as the trace records it. Window depth d maps to the view-axis coordinate
+// lo + (d - 0.25) / s, s the view's depth scale (project() in view_quads.cpp: [lo, hi] to
+// [0.25, 0.75]; s = 1 for a flat PCS), so d = 0 and d = 1 are lo - 0.25 / s and lo + 0.75 / s.
+GpuDepthImage capture_depth(const View& view, CullRenderer& renderer) {
+    GpuDepthImage image;
+    image.level = Triangles;
+    image.view = static_cast<std::uint8_t>(view.axis);
+    image.width = static_cast<std::uint32_t>(view.width);
+    image.height = static_cast<std::uint32_t>(view.height);
+    image.depth = renderer.read_depth();
+    const double lo = view.bounds.min()[view.axis];
+    const double extent = view.bounds.max()[view.axis] - lo;
+    const double scale = extent > 0 ? 0.5 / extent : 1.0;
+    image.depth_near = lo - 0.25 / scale;
+    image.depth_far = lo + 0.75 / scale;
+    return image;
+}
+
 std::uint32_t pcs_size(const std::vector<PcsObject>& pcs, Level level) {
     if (level == Objects) return static_cast<std::uint32_t>(pcs.size());
     std::uint32_t size = 0;
@@ -153,6 +171,8 @@ void cull_view(const Frame& frame, std::vector<PcsObject>& pcs, Level level, int
         times.render += stopwatch.lap_ms();
         hidden[reverse].assign(set.quads.size(), 0);
         read_pass(set, level, reverse, plan, renderer, pass, hidden[reverse]);
+        // Testers leave the depth buffer as the occluders wrote it: every PCS triangle drawn.
+        if (level == Triangles && !reverse && plan.capture_depth) info.depth_images.push_back(capture_depth(set.view, renderer));
         times.readback += stopwatch.lap_ms();
         info.queries += pass.queries;
         info.passes.push_back(pass);

@@ -33,6 +33,9 @@ struct CullPlan {
     GpuCullVariant variant = GpuCullVariant::Queries;
     bool object_level = true;
     bool sort_objects = true;             ///< front to back along each view (thesis 4.2.2)
+    /// Read back the depth buffer after the forward pass of each triangle-level view into
+    /// GpuFrameInfo::depth_images (GpuCullConfig::depth_every; the read back counts as readback).
+    bool capture_depth = false;
 };
 
 /// Milliseconds of the cull: issuing draws, and waiting for query results or flags.
