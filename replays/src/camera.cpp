@@ -66,6 +66,25 @@ Mat view_projection_of(const Camera& camera) {
 // sheets in the xy plane and objects side by side along x both show.
 constexpr Vec k_auto_direction = {0.55, -0.75, 0.45};
 
+// The distance along `direction` from `center` at which every corner of `bounds` lies inside
+// the field of view (tan_half_fov vertically, times aspect horizontally), with a small margin.
+double fit_corners(const Bounds& bounds, const Vec& center, const Vec& direction, double tan_half_fov, double aspect) {
+    Vec up = {0, 0, 1};
+    if (std::abs(dot(direction, up)) > 0.999) up = {0, 1, 0};
+    const Vec s = normalized(cross(Vec{-direction[0], -direction[1], -direction[2]}, up));
+    const Vec u = cross(s, Vec{-direction[0], -direction[1], -direction[2]});
+    double needed = 0;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec c = {(corner & 1) != 0 ? bounds.max[0] : bounds.min[0], (corner & 2) != 0 ? bounds.max[1] : bounds.min[1],
+                       (corner & 4) != 0 ? bounds.max[2] : bounds.min[2]};
+        const Vec r = sub(c, center);
+        const double toward = dot(r, direction);  // how much nearer the eye than the centre
+        needed = std::max(needed, toward + std::abs(dot(r, s)) / (tan_half_fov * aspect));
+        needed = std::max(needed, toward + std::abs(dot(r, u)) / tan_half_fov);
+    }
+    return needed * 1.04 + 1e-9;
+}
+
 }  // namespace
 
 void Bounds::add(double x, double y, double z) {
@@ -151,6 +170,11 @@ Camera make_camera(const CameraSpec& spec, const Bounds& bounds, const Rect& vie
         camera.target = spec.target_given ? spec.target : center;
     } else {
         Vec direction = normalized(k_auto_direction);
+        double eye_distance = distance;
+        if (spec.kind == CameraSpec::Kind::Auto && !bounds.empty()) {
+            // A fixed direction: fit the box's eight corners rather than its sphere (closer).
+            eye_distance = fit_corners(bounds, center, direction, std::tan(half_fov), aspect);
+        }
         if (spec.kind == CameraSpec::Kind::Orbit) {
             const double step = spec.degrees_per_frame != 0 ? spec.degrees_per_frame
                                                             : 360.0 / double(std::max<std::uint64_t>(frames, 1));
@@ -159,8 +183,8 @@ Camera make_camera(const CameraSpec& spec, const Bounds& bounds, const Rect& vie
                          direction[0] * std::sin(angle) + direction[1] * std::cos(angle), direction[2]};
         }
         camera.target = center;
-        camera.eye = {center[0] + direction[0] * distance, center[1] + direction[1] * distance,
-                      center[2] + direction[2] * distance};
+        camera.eye = {center[0] + direction[0] * eye_distance, center[1] + direction[1] * eye_distance,
+                      center[2] + direction[2] * eye_distance};
     }
     const double eye_distance = std::sqrt(dot(sub(camera.eye, camera.target), sub(camera.eye, camera.target)));
     camera.far_plane = eye_distance + 2 * radius + 1e-6;

@@ -29,6 +29,15 @@ std::vector<std::uint64_t> evenly_spaced(const std::vector<std::uint64_t>& candi
     return picked;
 }
 
+const char* short_mode_name(int mode) {
+    switch (mode) {
+    case 1: return "Mode 1";
+    case 2: return "Mode 2";
+    case 3: return "hybrid";
+    default: return "brute";
+    }
+}
+
 const char* selection_name(SheetSelection selection) {
     switch (selection) {
     case SheetSelection::Every: return "evenly spaced frames";
@@ -73,13 +82,13 @@ void write_contact_sheet(const std::filesystem::path& file, const std::vector<Sh
                          const SessionView& session, SheetSelection selection) {
     const int columns = std::max(1, std::min(k_columns, int(tiles.size())));
     const int rows = std::max(1, int((tiles.size() + std::size_t(columns) - 1) / std::size_t(columns)));
-    const float font = std::clamp(float(tile.width) / 26.0f, 11.0f, 16.0f);
+    const float font = std::clamp(float(tile.width) / 28.0f, 11.0f, 15.0f);
     const int gap = int(font * 0.6f);
     const int caption = int(font * 1.5f);
     const int header = int(font * 3.6f);
     const int width = columns * tile.width + (columns + 1) * gap;
     const int height = header + rows * (tile.height + caption + gap) + gap;
-    RenderThread thread = make_render_thread(width, height);
+    RenderThread thread = make_render_thread(width, height, font);
     std::vector<std::unique_ptr<Texture>> textures;
     for (const SheetTile& one : tiles) textures.push_back(std::make_unique<Texture>(one.rgba, tile.width, tile.height));
     thread.renderer->clear();
@@ -121,7 +130,7 @@ void write_contact_sheet(const std::filesystem::path& file, const std::vector<Sh
             draw->AddRectFilled(ImVec2(tx, ty + float(tile.height)), ImVec2(tx + font * 0.6f, ty + float(tile.height + caption)),
                                 ImGui::ColorConvertFloat4ToU32(ImVec4(c[0], c[1], c[2], 1)));
             ImGui::SetCursorPos(ImVec2(tx + font, ty + float(tile.height) + font * 0.2f));
-            ImGui::Text("frame %u  %s  %llu pairs  %.2f ms", tiles[i].frame, mode_name(tiles[i].mode),
+            ImGui::Text("frame %u   %s   %llu pairs   %.1f ms", tiles[i].frame, short_mode_name(tiles[i].mode),
                         static_cast<unsigned long long>(tiles[i].pairs), tiles[i].total_ms);
         }
         ImGui::End();

@@ -71,8 +71,9 @@ std::mutex& imgui_lock() {
     return lock;
 }
 
-Overlay::Overlay(int width, int height)
-    : m_width(width), m_height(height), m_font_size(std::clamp(float(height) / 48.0f, 11.0f, 22.0f)) {
+Overlay::Overlay(int width, int height, float font_size)
+    : m_width(width), m_height(height),
+      m_font_size(font_size > 0 ? font_size : std::clamp(float(height) / 48.0f, 11.0f, 22.0f)) {
     const std::lock_guard<std::mutex> guard(imgui_lock());
     m_context = ImGui::CreateContext();
     ImGui::SetCurrentContext(m_context);

@@ -48,8 +48,9 @@ std::mutex& imgui_lock();
 class Overlay {
 public:
     /// An ImGui context with the OpenGL3 backend in the current GL context, for width x height
-    /// images; the font is DejaVu Sans when installed (fonts-dejavu-core), else ImGui's own.
-    Overlay(int width, int height);
+    /// images; the font is DejaVu Sans when installed (fonts-dejavu-core), else ImGui's own, of
+    /// `font_size` pixels (0: from the height).
+    Overlay(int width, int height, float font_size = 0);
     ~Overlay();
     Overlay(const Overlay&) = delete;
     Overlay& operator=(const Overlay&) = delete;

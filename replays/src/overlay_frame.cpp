@@ -82,12 +82,13 @@ void pair_lines(const FrameData& frame) {
     heading("Pairs");
     ImGui::Text("colliding %.0f   candidates %.0f", value_of(frame.counts, "colliding_pairs"),
                 value_of(frame.counts, "candidate_pairs"));
-    ImGui::Text("object pairs %.0f   exact tests %.0f   triangles %.0f", value_of(frame.counts, "object_pairs"),
-                value_of(frame.counts, "exact_tests"), value_of(frame.counts, "triangles"));
+    ImGui::Text("object pairs %.0f   exact tests %.0f", value_of(frame.counts, "object_pairs"),
+                value_of(frame.counts, "exact_tests"));
+    ImGui::Text("triangles %.0f", value_of(frame.counts, "triangles"));
     if (!frame.aabb.empty()) {
+        const std::string reasons = rebuild_reason_names(std::uint8_t(value_of(frame.aabb, "rebuild_reasons")));
         ImGui::Text("AABB: rebuilt %.0f (%s), tree quality %.2f", value_of(frame.aabb, "rebuilt_objects"),
-                    rebuild_reason_names(std::uint8_t(value_of(frame.aabb, "rebuild_reasons"))).c_str(),
-                    value_of(frame.aabb, "tree_quality"));
+                    reasons.empty() ? "no rebuild" : reasons.c_str(), value_of(frame.aabb, "tree_quality"));
     }
     if (!frame.hybrid.empty()) {
         ImGui::Text("hybrid: TRI_1 %.0f  TRI_R %.0f  TRI_2 %.0f", value_of(frame.hybrid, "tri_1"),
@@ -166,7 +167,7 @@ void depth_column(const FrameData& frame, const SessionView& session, const Rect
         const float line = ImGui::GetTextLineHeightWithSpacing();
         // The colour bar and the view matrix keep their place at the bottom; the thumbnails
         // share what is above them.
-        const float reserve = line * 5.5f + std::min(ImGui::GetFontSize() * 2.6f, width / 3.0f) * 1.8f;
+        const float reserve = line * 6.0f + ImGui::GetFontSize() + std::min(ImGui::GetFontSize() * 2.6f, width / 3.0f) * 1.8f;
         const float bottom = float(rect.h) - reserve;
         if (frame.depth_images.empty()) {
             ImGui::PushTextWrapPos(0);

@@ -13,7 +13,7 @@
 
 namespace collidescope::replays {
 
-RenderThread make_render_thread(int width, int height) {
+RenderThread make_render_thread(int width, int height, float font_size) {
     RenderThread thread;
     try {
         thread.context = gpucull::make_osmesa_context();
@@ -21,7 +21,7 @@ RenderThread make_render_thread(int width, int height) {
         throw UnavailableError(std::string("replay: no offscreen GL context (") + error.what() + ")");
     }
     thread.renderer = std::make_unique<MeshRenderer>(width, height);
-    thread.overlay = std::make_unique<Overlay>(width, height);
+    thread.overlay = std::make_unique<Overlay>(width, height, font_size);
     return thread;
 }
 

@@ -22,9 +22,9 @@ struct RenderThread {
     std::unique_ptr<Overlay> overlay;
 };
 
-/// Makes a GL context current on this thread with a width x height framebuffer and an overlay.
-/// Throws UnavailableError naming the reason.
-RenderThread make_render_thread(int width, int height);
+/// Makes a GL context current on this thread with a width x height framebuffer and an overlay
+/// (its font `font_size` pixels; 0: from the height). Throws UnavailableError naming the reason.
+RenderThread make_render_thread(int width, int height, float font_size = 0);
 
 /// Runs job(thread, i) for i in [0, count) on `threads` threads (0 = hardware threads; never
 /// more than count). The first exception stops the others and is rethrown here. Returns the

@@ -96,7 +96,9 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
     const std::vector<std::uint64_t> picked =
         sheet ? select_sheet_frames(options.sheet_selection, options.sheet_count, totals, pairs) : std::vector<std::uint64_t>{};
     const std::set<std::uint64_t> on_sheet(picked.begin(), picked.end());
-    const TileSize tile = sheet_tile_size(options.width, options.height);
+    // The sheet shows each frame's meshes (the scene's part of the image); its captions and
+    // header carry the rest.
+    const TileSize tile = sheet_tile_size(layout.scene.w, layout.scene.h);
     std::map<std::uint64_t, SheetTile> tiles;
 
     ReplaySummary summary;
@@ -128,7 +130,10 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
         const double png = clock.lap();
         SheetTile sheet_tile;
         if (on_sheet.count(i) != 0) {
-            sheet_tile = {downscale(rgba, options.width, options.height, tile.width, tile.height), frame.frame,
+            const Rect& scene = layout.scene;
+            sheet_tile = {downscale(crop(rgba, options.width, scene.x, scene.y, scene.w, scene.h), scene.w, scene.h,
+                                    tile.width, tile.height),
+                          frame.frame,
                           frame_mode(frame.method, frame.decision), frame.method, frame.colliding.size(), totals[i]};
         }
         const std::lock_guard<std::mutex> guard(done_lock);
