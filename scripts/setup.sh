@@ -16,7 +16,7 @@ PACKAGES=(
   # recorder
   libhdf5-dev hdf5-tools
   # replays (offscreen GL, overlays, PNG)
-  libosmesa6-dev libegl-dev libepoxy-dev libimgui-dev libstb-dev
+  libosmesa6-dev libegl-dev libepoxy-dev libimgui-dev libstb-dev fonts-dejavu-core
   # data: the Stanford bunny (/usr/share/glmark2/models/bunny.obj)
   glmark2-data
   # peers of the aabb method (bench/peers/bench_bvh_peers, built only when present)

@@ -58,9 +58,10 @@ void decision_lines(const FrameData& frame) {
     ImGui::Text("AABB_T %s  GPU_T %s  hybrid %s", format("%.3g ms", value_of(frame.decision, "aabb_ms")).c_str(),
                 format("%.3g ms", value_of(frame.decision, "gpu_ms")).c_str(),
                 format("%.3g ms", value_of(frame.decision, "hybrid_ms")).c_str());
-    ImGui::Text("rebuild avg %s  exploration %.3f  draw %s",
-                format("%.3g ms", value_of(frame.decision, "rebuild_avg_ms")).c_str(),
-                value_of(frame.decision, "exploration"), format("%.3f", value_of(frame.decision, "draw")).c_str());
+    ImGui::Text("rebuild average %s  (%s policy)", format("%.3g ms", value_of(frame.decision, "rebuild_avg_ms")).c_str(),
+                value_of(frame.decision, "policy") == 1 ? "cost" : "thesis");
+    ImGui::Text("exploration %.3f  draw %s", value_of(frame.decision, "exploration"),
+                format("%.3f", value_of(frame.decision, "draw")).c_str());
 }
 
 void stage_bars(const FrameData& frame) {

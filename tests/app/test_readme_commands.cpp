@@ -63,12 +63,21 @@ TEST(ReadmeCommands, MainJobRunsTheBuiltBinary) {
     const std::string command = readme_command("readme-command-a");
     ASSERT_NE(command, "");
     EXPECT_EQ(command.rfind("scripts/setup.sh && ", 0), 0u) << command;
-    // The binary the command runs is where this build puts it, relative to its build dir.
+    // The binary the command runs is where this build puts it, relative to its build dir; the
+    // main job records a built-in scene, then replays that recording into PNGs and a contact sheet.
     const std::filesystem::path binary = COLLIDESCOPE_BIN;
-    EXPECT_NE(command.find("build/" + binary.parent_path().filename().string() + "/" + binary.filename().string() +
-                           " check --scene "),
-              std::string::npos)
-        << command;
+    const std::string run = "build/" + binary.parent_path().filename().string() + "/" + binary.filename().string();
+    const std::size_t record = command.find(" && " + run + " record --scene ");
+    const std::size_t replay = command.find(" && " + run + " replay ");
+    ASSERT_NE(record, std::string::npos) << command;
+    ASSERT_NE(replay, std::string::npos) << command;
+    EXPECT_LT(record, replay) << command;
+    // The file replay reads is the one record wrote, and the contact sheet is asked for.
+    const std::size_t output = command.find(" -o ", record);
+    ASSERT_LT(output, replay) << command;
+    const std::string recording = command.substr(output + 4, command.find(' ', output + 4) - output - 4);
+    EXPECT_EQ(command.find(" replay " + recording + " -o "), replay + 4 + run.size()) << command;
+    EXPECT_NE(command.find(" --contact-sheet ", replay), std::string::npos) << command;
 }
 
 }  // namespace
