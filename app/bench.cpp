@@ -131,6 +131,9 @@ int run_bench(const BenchOptions& options) {
     const std::vector<BenchSummary> rows = summarize(results);
     write_reports(directory, results, rows, options);
     print_table(std::cout, rows);
+    const std::string analysis = hybrid_analysis(results);
+    std::cout << analysis;
+    if (!analysis.empty()) write_text_file(directory / "hybrid_analysis.txt", analysis);
     std::cout.flush();
 
     std::uint64_t frames_checked = 0;

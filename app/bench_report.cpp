@@ -153,6 +153,52 @@ void print_table(std::ostream& out, const std::vector<BenchSummary>& rows) {
     }
 }
 
+std::string hybrid_analysis(const std::vector<BenchScene>& scenes) {
+    std::vector<std::string> names;
+    for_each_hybrid_value(HybridFrameInfo{}, [&](const char* name, double, const char*) { names.emplace_back(name); });
+    const auto index = [&](const char* name) {
+        return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+    };
+    const auto median_of = [](std::vector<double> values) {
+        if (values.empty()) return 0.0;
+        std::sort(values.begin(), values.end());
+        return values[values.size() / 2];
+    };
+    std::ostringstream out;
+    for (const BenchScene& scene : scenes) {
+        std::map<std::uint32_t, double> aabb_ms;
+        for (const BenchFrame& frame : scene.frames) {
+            if (frame.method == "aabb") aabb_ms[frame.frame] = frame.total_ms();
+        }
+        std::map<std::string, std::vector<double>> columns;
+        std::uint32_t frames = 0, right = 0, predicted = 0, won = 0;
+        for (const BenchFrame& frame : scene.frames) {
+            if (frame.method != "hybrid" || frame.hybrid.size() != names.size() || !aabb_ms.count(frame.frame)) continue;
+            for (const char* name : {"o_ms", "t_i_ms", "a1", "a2", "tri_1", "tri_r", "tri_2", "unculled"}) {
+                columns[name].push_back(frame.hybrid[index(name)]);
+            }
+            const bool says = frame.hybrid[index("predicted_hybrid_wins")] != 0;
+            const bool wins = frame.total_ms() < aabb_ms[frame.frame];
+            ++frames;
+            predicted += says ? 1 : 0;
+            won += wins ? 1 : 0;
+            right += says == wins ? 1 : 0;
+        }
+        if (frames == 0) continue;
+        char line[512];
+        std::snprintf(line, sizeof line,
+                      "hybrid analysis %s:%s (medians): O %.4g ms/triangle, T_I %.3g ms, A1 %.0f, A2 %.0f, TRI_1 %.0f, "
+                      "TRI_R %.0f, TRI_2 %.0f, unculled %.3f; inequality 4.16 predicted the winner (hybrid vs aabb) on "
+                      "%u of %u frames (predicted hybrid %u, hybrid won %u)\n",
+                      scene.name.c_str(), scene.preset.c_str(), median_of(columns["o_ms"]), median_of(columns["t_i_ms"]),
+                      median_of(columns["a1"]), median_of(columns["a2"]), median_of(columns["tri_1"]),
+                      median_of(columns["tri_r"]), median_of(columns["tri_2"]), median_of(columns["unculled"]), right,
+                      frames, predicted, won);
+        out << line;
+    }
+    return out.str();
+}
+
 std::string plot_file_name(const BenchScene& scene) {
     return "time_" + scene.name + "_" + scene.preset + ".svg";
 }

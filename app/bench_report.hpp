@@ -46,6 +46,11 @@ void write_summary_csv(const std::filesystem::path& file, const std::vector<Benc
 /// The summary as an aligned text table.
 void print_table(std::ostream& out, const std::vector<BenchSummary>& rows);
 
+/// The hybrid framework's analysis (thesis 4.3) on each scene where `hybrid` and `aabb` both
+/// ran: the medians of the measured unit costs and counts (Equations 4.11-4.17), and on how
+/// many frames Inequality 4.16 predicted the winner of hybrid against aabb. "" when none.
+std::string hybrid_analysis(const std::vector<BenchScene>& scenes);
+
 /// An SVG line chart of the per-frame total time of each method on one scene.
 std::string plot_svg(const BenchScene& scene);
 

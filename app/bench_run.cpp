@@ -61,6 +61,7 @@ BenchScene run_bench_scene(const Scene& scene, const BenchPlan& plan,
     const std::uint32_t frames = plan.end - plan.begin;
     Samples samples(methods, std::vector<std::vector<std::vector<double>>>(frames));
     std::vector<std::vector<std::vector<std::uint64_t>>> counts(methods, std::vector<std::vector<std::uint64_t>>(frames));
+    std::vector<std::vector<std::vector<double>>> hybrid(methods, std::vector<std::vector<double>>(frames));
     std::vector<std::vector<std::pair<std::uint8_t, std::uint8_t>>> modes(methods, std::vector<std::pair<std::uint8_t, std::uint8_t>>(frames, {0, 255}));
 
     for (int rep = 0; rep < plan.repeat; ++rep) {
@@ -86,6 +87,10 @@ BenchScene run_bench_scene(const Scene& scene, const BenchPlan& plan,
                 FrameResult frame_result = pipelines[m]->process(frame);
                 samples[m][f].push_back(stage_values(frame_result.stats.ms));
                 if (rep == 0) counts[m][f] = count_values(frame_result.stats.counts);
+                if (rep == 0 && frame_result.stats.hybrid) {
+                    for_each_hybrid_value(*frame_result.stats.hybrid,
+                                          [&](const char*, double value, const char*) { hybrid[m][f].push_back(value); });
+                }
                 if (rep == 0 && frame_result.stats.decision) {
                     modes[m][f] = {frame_result.stats.decision->mode, frame_result.stats.decision->action};
                 }
@@ -115,7 +120,7 @@ BenchScene run_bench_scene(const Scene& scene, const BenchPlan& plan,
                 ms[s] = median(std::move(values));
             }
             result.frames.push_back({plan.methods[m], plan.begin + f, std::move(ms), counts[m][f], modes[m][f].first,
-                                     modes[m][f].second});
+                                     modes[m][f].second, std::move(hybrid[m][f])});
         }
     }
     return result;

@@ -38,6 +38,9 @@ struct BenchFrame {
     std::vector<std::uint64_t> counts;
     std::uint8_t mode = 0;       ///< adaptive methods: the mode in force (1 or 2) in the first run; 0 otherwise
     std::uint8_t action = 255;   ///< adaptive methods: DecisionAction of the first run; 255 otherwise
+    /// The hybrid framework's analysis (for_each_hybrid_value order) of the first run; empty
+    /// when the method did not run it on this frame.
+    std::vector<double> hybrid;
     double total_ms() const { return ms.back(); }  ///< `total` is the last stage
 };
 
