@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <unistd.h>
 #include <set>
 
 namespace collidescope {
@@ -77,9 +78,11 @@ bool viridis_like(const std::uint8_t* p) { return p[1] > 60 && p[1] > p[0] + 20;
 class Replay : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        s_dir = testing::test_dir("suite");
+        // One recording per process: ctest runs each test as its own process, several at once.
+        s_dir = testing::test_dir("suite_" + std::to_string(::getpid()));
         testing::record(k_scene, "gpu", s_dir / "gpu.h5");
     }
+    static void TearDownTestSuite() { std::filesystem::remove_all(s_dir); }
     static std::filesystem::path s_dir;
 };
 std::filesystem::path Replay::s_dir;
@@ -346,6 +349,29 @@ TEST_F(Replay, ARecordingWithDepthBuffersShowsThumbnails) {
     const replays::FrameLayout layout = replays::frame_layout(800, 450, replays::k_layer_all);
     const replays::Rect thumbnails = {layout.depth.x, layout.depth.y + layout.depth.h / 10, layout.depth.w, layout.depth.h / 2};
     EXPECT_GT(count_pixels(image, thumbnails, viridis_like), 2000u);
+}
+
+TEST_F(Replay, DecisionsShowWhenRecordedAndAreSaidMissingOtherwise) {
+    const std::filesystem::path out = testing::test_dir("decision");
+    testing::record(k_scene, "adaptive", out / "adaptive.h5", {"--frames", "8:12"});
+    {
+        const recorder::Recording recording(out / "adaptive.h5");
+        ASSERT_FALSE(recording.frame_values("decision").empty()) << "record --method adaptive stored no decisions";
+    }
+    const testing::CliResult adaptive =
+        run_cli({"replay", (out / "adaptive.h5").string(), "-o", (out / "a").string(), "--size", "800x450"}, out);
+    ASSERT_EQ(adaptive.exit_code, 0) << adaptive.err;
+    EXPECT_EQ(adaptive.err.find("no decisions"), std::string::npos) << adaptive.err;
+    const testing::CliResult gpu = run_cli(
+        {"replay", (s_dir / "gpu.h5").string(), "-o", (out / "g").string(), "--size", "800x450", "--frames", "8:12"}, out);
+    ASSERT_EQ(gpu.exit_code, 0) << gpu.err;
+    EXPECT_NE(gpu.err.find("no decisions in this recording"), std::string::npos) << gpu.err;
+    // The decision's lines make the panel hold more text than "not recorded" does.
+    const replays::FrameLayout layout = replays::frame_layout(800, 450, replays::k_layer_all);
+    const replays::Rect decision = {layout.panel.x, layout.panel.y, layout.panel.w, layout.panel.h / 4};
+    const std::uint64_t with = count_pixels(read_png(out / "a" / frame_name(8)), decision, testing::is_bright);
+    const std::uint64_t without = count_pixels(read_png(out / "g" / frame_name(8)), decision, testing::is_bright);
+    EXPECT_GT(with, without + 100) << with << " vs " << without;
 }
 
 TEST(ReplayErrors, ACorruptRecordingIsOneLineNamingTheFileAndExit2) {
