@@ -108,6 +108,7 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
     bool any_depth = false;
     bool any_pcs = false;
     bool any_decision = false;
+    std::uint64_t dropped = 0;
     const auto start = std::chrono::steady_clock::now();
     summary.renderer = run_parallel(options.threads, rows.size(), options.width, options.height,
                                     [&](RenderThread& thread, std::uint64_t i) {
@@ -148,6 +149,7 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
         any_depth = any_depth || !frame.depth_images.empty();
         any_pcs = any_pcs || frame.pcs_recorded;
         any_decision = any_decision || !frame.decision.empty();
+        dropped += frame.positions_dropped ? 1 : 0;
         if (on_sheet.count(i) != 0) tiles[i] = std::move(sheet_tile);
         ++summary.frames;
         if (frame_done) frame_done(rows.size());
@@ -163,6 +165,10 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
     }
     if ((options.layers & k_layer_overlay) != 0 && !any_decision) {
         summary.notes.push_back("no decisions in this recording (record --method adaptive): the panel says not recorded");
+    }
+    if (dropped > 0) {
+        summary.notes.push_back("the vertex positions of " + std::to_string(dropped) + " of " + std::to_string(rows.size()) +
+                                " frames were not recorded (record --budget): those frames show no meshes");
     }
     if (sheet) {
         std::vector<SheetTile> ordered;
