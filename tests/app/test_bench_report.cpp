@@ -17,6 +17,7 @@ app::BenchFrame frame(const std::string& method, std::uint32_t index, double tot
     f.frame = index;
     f.ms.assign(11, 0.0);
     f.ms.back() = total_ms;
+    for_each_count(FrameCounts{}, [&](const char*, std::uint64_t) { f.counts.push_back(0); });
     f.mode = mode;
     f.action = action;
     return f;
