@@ -89,6 +89,7 @@ std::string rate_line(const replays::ReplaySummary& summary, const replays::Repl
                   summary.seconds > 0 ? double(summary.frames) / summary.seconds : 0.0, summary.threads,
                   summary.renderer.c_str());
     std::string text = line;
+    if (summary.draw_seconds <= 0) return text;  // --diff does not time its steps
     std::snprintf(line, sizeof line, "; thread seconds: read %.2f, draw %.2f, read back %.2f, png %.2f",
                   summary.read_seconds, summary.draw_seconds, summary.readback_seconds, summary.png_seconds);
     return text + line;

@@ -88,6 +88,21 @@ void diff_legend(const Rect& rect) {
     ImGui::PopStyleVar();
 }
 
+// Pairs only compare between recordings of one scene: same objects, same triangles.
+void check_same_scene(const RecordingData& a, const RecordingData& b) {
+    const std::string both = a.path() + " and " + b.path();
+    if (a.object_count() != b.object_count()) {
+        throw InputError(both + ": different numbers of objects (" + std::to_string(a.object_count()) + " and " +
+                         std::to_string(b.object_count()) + "); --diff compares recordings of one scene");
+    }
+    const std::string scene_a = a.attribute("scene") + ":" + a.attribute("scene_preset");
+    const std::string scene_b = b.attribute("scene") + ":" + b.attribute("scene_preset");
+    if (scene_a != scene_b) {
+        throw InputError(both + ": different scenes (" + scene_a + " and " + scene_b +
+                         "); --diff compares recordings of one scene");
+    }
+}
+
 std::filesystem::path diff_file(const std::filesystem::path& dir, std::uint32_t frame) {
     char name[48];
     std::snprintf(name, sizeof name, "diff_%04u.png", frame);
@@ -109,10 +124,7 @@ ReplaySummary replay_diff(const std::filesystem::path& a, const std::filesystem:
         if (it != row_of_b.end()) rows.emplace_back(row, it->second);
     }
     if (rows.empty()) throw InputError(a.string() + " and " + b.string() + ": no scene frame recorded in both");
-    if (data_a.object_count() != data_b.object_count()) {
-        throw InputError(a.string() + " and " + b.string() + ": different numbers of objects (" +
-                         std::to_string(data_a.object_count()) + " and " + std::to_string(data_b.object_count()) + ")");
-    }
+    check_same_scene(data_a, data_b);
     prepare_output_dir(options.output_dir);
     std::vector<std::uint64_t> just_a, just_b;
     for (const auto& [ra, rb] : rows) {

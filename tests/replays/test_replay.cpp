@@ -318,6 +318,11 @@ TEST_F(Replay, DiffHighlightsAPlantedPairDifference) {
     EXPECT_GT(count_pixels(planted, left, testing::is_diff_colour) + count_pixels(planted, right, testing::is_diff_colour),
               legend_green + 20);
     EXPECT_GT(count_pixels(planted, right, testing::is_diff_colour), 10u);
+    // Recordings of another scene do not compare.
+    testing::record("C:small", "aabb", out / "other.h5", {"--frames", "0:2"});
+    const testing::CliResult other = run_cli({"replay", "--diff", "a.h5", "other.h5", "-o", "other"}, out);
+    EXPECT_EQ(other.exit_code, 2);
+    EXPECT_NE(other.err.find("different scenes"), std::string::npos) << other.err;
 }
 
 TEST_F(Replay, ARecordingWithoutDepthBuffersReplaysWithoutThumbnailsAndSaysSo) {
