@@ -36,16 +36,18 @@ struct RecordOptions {
 constexpr const char* k_footer = R"(Writes one HDF5 file (schema: docs/recording.md; read it with h5py, h5dump,
 `collidescope inspect`, `validate`, `compare` or the scripts in scripts/). The file is written
 frame by frame in SWMR mode: a killed recording keeps every finished frame.
---depth every:N asks for the GPU cull's depth buffers every Nth frame; the cull does not report
-them yet, so the option is only stored (the cull's per-pass state is recorded: /frames/gpu, /gpu).
+--depth every:N records the GPU cull's depth buffers (one per triangle-level view, read back
+after its forward pass) on every frame whose index is a multiple of N, with methods that run
+the GPU cull (/gpu/depth: uint16, compressed); the cull's per-pass state, its surviving
+triangles and the decision system's inputs are recorded on every frame.
 --budget SIZE (e.g. 50M, 2G; K/M/G are powers of 1024) keeps the file near SIZE by dropping
-the vertex positions of more and more frames (depth buffers would go first); the summary
-says what was dropped.
+the depth buffers of more and more frames first, then the vertex positions; the summary says
+what was dropped.
 Exit codes: 0 recorded (whatever collided), 2 error.)";
 
-// --depth: "off" or "every:N" with N >= 1.
-void check_depth(const std::string& depth) {
-    if (depth == "off") return;
+// --depth: "off" (0) or "every:N" with N >= 1 (N).
+std::uint32_t parse_depth(const std::string& depth) {
+    if (depth == "off") return 0;
     const std::string prefix = "every:";
     unsigned every = 0;
     const char* begin = depth.data() + prefix.size();
@@ -53,6 +55,7 @@ void check_depth(const std::string& depth) {
     const bool ok = depth.rfind(prefix, 0) == 0 && depth.size() > prefix.size() &&
                     std::from_chars(begin, end, every).ptr == end && every >= 1;
     if (!ok) throw InputError("--depth must be 'off' or 'every:N' with N >= 1, not '" + depth + "'");
+    return every;
 }
 
 recorder::SessionInfo session_info(const Scene& scene, const RecordOptions& options, const PipelineConfig& config,
@@ -67,36 +70,49 @@ recorder::SessionInfo session_info(const Scene& scene, const RecordOptions& opti
     info.frame_begin = range.begin;
     info.frame_end = range.end;
     info.depth = options.depth;
+    info.depth_image_pixels = std::uint64_t(config.gpu.resolution) * std::uint64_t(config.gpu.resolution);
     info.tool_version = COLLIDESCOPE_VERSION;
     info.git_revision = COLLIDESCOPE_GIT_REVISION;
     for (std::uint32_t k = 0; k < scene.source->object_count(); ++k) info.object_names.push_back(scene.source->object_name(k));
     return info;
 }
 
+// "every 4th ... kept at the end" / "none kept at the end".
+std::string stride_text(std::uint32_t stride, const char* what) {
+    if (stride == 0) return "none kept at the end";
+    return "every " + std::to_string(stride) + (stride == 2 ? "nd " : "th ") + what + " kept at the end";
+}
+
 std::string summary_line(const recorder::RecordSummary& summary, const std::string& path, std::uint64_t budget) {
     std::string line = "recorded " + std::to_string(summary.frames) + " frames to " + path + " (" +
                        format_size(summary.file_bytes) + ")";
-    if (budget > 0) {
-        line += "; budget " + format_size(budget) + ": ";
-        line += summary.positions_dropped == 0
-                    ? "nothing dropped"
-                    : "dropped the vertex positions of " + std::to_string(summary.positions_dropped) + " of " +
-                          std::to_string(summary.frames) + " frames (" +
-                          (summary.positions_stride == 0
-                               ? std::string("none kept at the end")
-                               : "every " + std::to_string(summary.positions_stride) + "th frame kept at the end") +
-                          "; no depth buffers to drop)";
-        if (summary.file_bytes > budget) line += "; still over budget (pairs and stats alone exceed it)";
+    if (summary.depth_frames > 0) line += ", depth images on " + std::to_string(summary.depth_frames) + " frames";
+    if (budget == 0) return line;
+    line += "; budget " + format_size(budget) + ": ";
+    std::vector<std::string> dropped;
+    if (summary.depth_dropped > 0) {
+        dropped.push_back("the depth images of " + std::to_string(summary.depth_dropped) + " of " +
+                          std::to_string(summary.depth_frames) + " frames that had them (" +
+                          stride_text(summary.depth_stride, "one") + ")");
     }
+    if (summary.positions_dropped > 0) {
+        dropped.push_back("the vertex positions of " + std::to_string(summary.positions_dropped) + " of " +
+                          std::to_string(summary.frames) + " frames (" +
+                          stride_text(summary.positions_stride, "frame") + ")");
+    }
+    if (dropped.empty()) line += "nothing dropped";
+    for (std::size_t i = 0; i < dropped.size(); ++i) line += (i == 0 ? "dropped " : ", then ") + dropped[i];
+    if (summary.file_bytes > budget) line += "; still over budget (pairs and stats alone exceed it)";
     return line;
 }
 
 int run_record(const RecordOptions& options) {
-    check_depth(options.depth);
+    const std::uint32_t depth_every = parse_depth(options.depth);
     const std::uint64_t budget = options.budget.empty() ? 0 : parse_size(options.budget, "--budget");
     const Scene scene = open_scene(options.inputs, options.scene);
     const FrameRange range = parse_frame_range(options.frames, scene.source->frame_count());
-    const PipelineConfig config = pipeline_config(options.engine, scene);
+    PipelineConfig config = pipeline_config(options.engine, scene);
+    config.gpu.depth_every = depth_every;
     Pipeline pipeline(config);
     Frame frame = scene.source->frame(range.begin);
 
@@ -142,9 +158,9 @@ Command add_record_command(CLI::App& app) {
         ->required()
         ->type_name("FILE");
     record->add_option("--frames", options->frames, "Frames to record: A:B (half-open), A:, :B or N")->type_name("A:B");
-    record->add_option("--depth", options->depth, "GPU cull depth buffers: off or every:N (not reported by the cull yet)")
+    record->add_option("--depth", options->depth, "GPU cull depth buffers: off or every:N (frames whose index is a multiple of N)")
         ->capture_default_str();
-    record->add_option("--budget", options->budget, "Bound the file size (decimates positions), e.g. 100M")
+    record->add_option("--budget", options->budget, "Bound the file size (decimates depth buffers, then positions), e.g. 100M")
         ->type_name("SIZE");
     record->add_option("--queue-memory", options->queue, "Memory cap of frames waiting for the writer thread")
         ->type_name("SIZE")

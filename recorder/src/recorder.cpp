@@ -2,6 +2,7 @@
 
 #include "collidescope/recorder/recorder.hpp"
 
+#include "file_budget.hpp"
 #include "frame_queue.hpp"
 #include "trace_file.hpp"
 
@@ -20,50 +21,6 @@
 namespace collidescope::recorder {
 namespace {
 
-/// --budget: keeps positions every `stride`th recorded frame. From the file's growth since the
-/// first frames (which allocate every dataset's first chunk), it estimates what each further
-/// frame costs without positions and what each kept positions frame adds, and raises the stride
-/// (powers of 2, never lowered) to the least that fits the remaining frames into the budget;
-/// with no room for even one more positions frame, positions stop (stride 0).
-class PositionsBudget {
-public:
-    PositionsBudget(std::uint64_t budget, std::uint64_t frames_total) : m_budget(budget), m_total(frames_total) {}
-
-    bool keep(std::uint64_t row) const { return m_stride != 0 && row % m_stride == 0; }
-    /// After `rows_done` frames, `rows_kept` of them with positions.
-    void update(std::uint64_t rows_done, std::uint64_t rows_kept, std::uint64_t positions_bytes, std::uint64_t file_bytes) {
-        if (m_budget == 0 || m_stride == 0 || rows_done >= m_total) return;
-        if (rows_done <= k_warmup) {
-            m_base = {rows_done, rows_kept, positions_bytes, file_bytes};
-            if (file_bytes < m_budget) return;  // decide on the first frames only when already over
-        }
-        const double remaining = static_cast<double>(m_total - rows_done);
-        const double rows = static_cast<double>(std::max<std::uint64_t>(rows_done - m_base.rows, 1));
-        const double growth = static_cast<double>(file_bytes - std::min(file_bytes, m_base.file));
-        const double positions = static_cast<double>(positions_bytes - std::min(positions_bytes, m_base.positions));
-        const double kept = static_cast<double>(rows_kept - std::min(rows_kept, m_base.kept));
-        const double other = std::max(growth - positions, 0.0) / rows;
-        const double per_positions = kept > 0 ? positions / kept : static_cast<double>(positions_bytes) / static_cast<double>(std::max<std::uint64_t>(rows_kept, 1));
-        const double room = static_cast<double>(m_budget) - static_cast<double>(file_bytes) - remaining * other;
-        if (room <= per_positions) {
-            m_stride = 0;
-            return;
-        }
-        while (m_stride < (1u << 30) && remaining / m_stride * per_positions > room) m_stride *= 2;
-    }
-    std::uint32_t stride() const { return m_stride; }
-
-private:
-    static constexpr std::uint64_t k_warmup = 2;  ///< frames whose growth includes first chunks
-    struct Base {
-        std::uint64_t rows = 0, kept = 0, positions = 0, file = 0;
-    };
-    std::uint64_t m_budget;
-    std::uint64_t m_total;
-    std::uint32_t m_stride = 1;
-    Base m_base;
-};
-
 std::vector<float> to_float(const std::vector<Vec3>& vertices) {
     std::vector<float> out(vertices.size() * 3);
     for (std::size_t v = 0; v < vertices.size(); ++v) {
@@ -81,7 +38,7 @@ struct Recorder::State {
     bool first = true;
     TraceFile file;
     FrameQueue queue;
-    PositionsBudget budget;
+    FileBudget budget;
     RecordSummary summary;
     std::mutex error_mutex;
     std::exception_ptr error;
@@ -105,17 +62,27 @@ void Recorder::State::write_loop() {
     if (config.writer_nice > 0) {
         setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), config.writer_nice);
     }
-    std::uint64_t kept = 0;
+    FileBudget::Usage usage;
     try {
         while (std::optional<FrameRecord> record = queue.pop()) {
-            const bool keep = budget.keep(summary.frames);
-            file.append(*record, {keep, true});
-            summary.positions_dropped += keep ? 0 : 1;
-            kept += keep ? 1 : 0;
+            TraceFile::Keep keep;
+            keep.positions = budget.keep_positions(summary.frames);
+            const bool has_depth = !record->depth_images.empty();
+            keep.depth = has_depth && budget.keep_depth();
+            file.append(*record, keep);
+            summary.positions_dropped += keep.positions ? 0 : 1;
+            summary.depth_frames += has_depth ? 1 : 0;
+            summary.depth_dropped += has_depth && !keep.depth ? 1 : 0;
             ++summary.frames;
             if (config.budget_bytes > 0) {
-                const std::uint64_t bytes = file.file_bytes();
-                budget.update(summary.frames, kept, file.positions_bytes(), bytes);
+                usage.rows = summary.frames;
+                usage.positions_kept += keep.positions ? 1 : 0;
+                usage.depth_kept += keep.depth ? 1 : 0;
+                usage.depth_seen += has_depth ? 1 : 0;
+                usage.file_bytes = file.file_bytes();
+                usage.positions_bytes = file.positions_bytes();
+                usage.depth_bytes = file.depth_bytes();
+                budget.update(usage);
             }
         }
     } catch (...) {
@@ -209,8 +176,9 @@ RecordSummary Recorder::finish() {
     if (state.writer.joinable()) state.writer.join();
     state.rethrow_writer_error();
     state.file.close();
-    TraceFile::mark_finished(state.config.path, state.summary.frames, state.budget.stride());
-    state.summary.positions_stride = state.budget.stride();
+    TraceFile::mark_finished(state.config.path, state.summary.frames, state.budget.positions_stride());
+    state.summary.positions_stride = state.budget.positions_stride();
+    state.summary.depth_stride = state.budget.depth_stride();
     state.summary.queue_peak_bytes = state.queue.peak_bytes();
     std::error_code error;
     state.summary.file_bytes = std::filesystem::file_size(state.config.path, error);

@@ -15,7 +15,6 @@ namespace {
 // chunks keep their first allocation from dominating a short recording's size.
 constexpr hsize_t k_detail_chunk = 32;
 constexpr hsize_t k_survivor_chunk = 8192;   // survivors per chunk (64 KiB)
-constexpr hsize_t k_pixel_chunk = 65536;     // depth pixels per chunk (128 KiB: one 256 x 256 image)
 
 /// (name, unit) of every value a for_each_*_value visitor lists for `info`.
 template <class Info, class ForEach>
@@ -81,8 +80,10 @@ void TraceFile::create_details() {
     m_depth.info = make_column(schema::k_depth_info, {H5T_STD_U32LE, 4, k_detail_chunk, 0, schema::k_unit_none});
     m_depth.range = make_column(schema::k_depth_range, {H5T_IEEE_F64LE, 2, k_detail_chunk, 0, schema::k_unit_length});
     m_depth.pixel_offsets = make_column(schema::k_depth_pixel_offsets, {H5T_STD_U64LE, 1, k_detail_chunk, 0, schema::k_unit_none});
-    // Compressed always: the background (65535) dominates most views.
-    m_depth.pixels = make_column(schema::k_depth_pixels, {H5T_STD_U16LE, 1, k_pixel_chunk, deflate, "1/65535 window depth"});
+    // One image per chunk: a chunk filled over several frames would be rewritten (and its old
+    // copy left behind in the file) at every flush. Compressed always: the background (65535)
+    // dominates most views.
+    m_depth.pixels = make_column(schema::k_depth_pixels, {H5T_STD_U16LE, 1, m_depth_chunk, deflate, "1/65535 window depth"});
 
     const std::uint64_t zero = 0;
     for (Column* offsets : {&m_gpu_pass_offsets, &m_gpu_survivor_offsets, &m_depth.image_offsets, &m_depth.pixel_offsets}) {

@@ -32,7 +32,9 @@ std::string utc_now() {
 
 TraceFile::TraceFile(const std::filesystem::path& path, const SessionInfo& session, const Frame& first,
                      std::span<const std::string> methods, int deflate_level)
-    : m_where(path.string()), m_deflate(deflate_level) {
+    : m_where(path.string()),
+      m_deflate(deflate_level),
+      m_depth_chunk(session.depth_image_pixels > 0 ? chunk_rows(session.depth_image_pixels) : 65536) {
     h5::silence();
     const h5::Id fapl = m_where.own(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create a property list");
     // SWMR needs the latest file format.

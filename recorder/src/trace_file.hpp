@@ -84,6 +84,7 @@ private:
     std::vector<std::uint16_t> m_pixels;              ///< scratch: one image quantised
     std::vector<ObjectColumns> m_objects;
     int m_deflate;
+    hsize_t m_depth_chunk;  ///< pixels per chunk of /gpu/depth/pixels: one image
 };
 
 }  // namespace collidescope::recorder

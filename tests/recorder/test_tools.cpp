@@ -28,7 +28,9 @@ using testing_files::write_text;
 class RecorderTools : public ::testing::Test {
 protected:
     void SetUp() override {
-        const testing::CliResult result = run_cli({"record", "--scene", "demo:small", "-o", "run.h5", "-q"}, m_dir.path());
+        // brute: the method whose frames inspect counts below (the default is adaptive).
+        const testing::CliResult result =
+            run_cli({"record", "--scene", "demo:small", "--method", "brute", "-o", "run.h5", "-q"}, m_dir.path());
         ASSERT_EQ(result.exit_code, 0) << result.err;
     }
     // Copies run.h5 to `name` for breaking.

@@ -28,6 +28,9 @@ struct SessionInfo {
     std::uint32_t frame_end = 0;            ///< one past the last scene frame to record
     std::string depth = "off";              ///< --depth: "off" or "every:N" (nothing to record before Mode 2)
     std::string gl_renderer;                ///< GL_RENDERER of the cull's context ("" without GPU cull)
+    /// Pixels of one depth image (the cull's resolution squared): the depth pixels' chunk, so
+    /// each image is one chunk, written once. 0: 65536.
+    std::uint64_t depth_image_pixels = 0;
     std::string tool_version;               ///< COLLIDESCOPE_VERSION
     std::string git_revision;               ///< COLLIDESCOPE_GIT_REVISION
     std::vector<std::string> object_names;  ///< in input order
@@ -37,7 +40,7 @@ struct SessionInfo {
 struct RecorderConfig {
     std::filesystem::path path;                 ///< the file to create (truncated if it exists)
     std::size_t queue_bytes = 256u << 20;       ///< memory cap of frames waiting for the writer
-    std::uint64_t budget_bytes = 0;             ///< file size bound (0 = none): positions decimated to fit
+    std::uint64_t budget_bytes = 0;             ///< file size bound (0 = none): depth images, then positions decimated to fit
     int deflate_level = 1;                      ///< gzip level of compressed datasets (0-9; 1: cheapest)
     int writer_nice = 10;                       ///< nice increment of the writer thread (Linux; 0 = none)
 };
@@ -48,6 +51,9 @@ struct RecordSummary {
     std::uint64_t file_bytes = 0;          ///< final file size
     std::uint32_t positions_stride = 1;    ///< positions kept every Nth frame at the end (1 = all, 0 = none; --budget)
     std::uint64_t positions_dropped = 0;   ///< frames whose positions were dropped (--budget)
+    std::uint64_t depth_frames = 0;        ///< frames that came with depth images
+    std::uint64_t depth_dropped = 0;       ///< of those, frames whose depth images were dropped (--budget)
+    std::uint32_t depth_stride = 1;        ///< depth images kept every Nth such frame at the end (1 = all, 0 = none)
     std::uint64_t queue_peak_bytes = 0;    ///< largest queue held
 };
 
