@@ -31,7 +31,7 @@ Outcome ran(Action action, double ms) {
 }
 
 TEST(CostPolicy, FirstFrameMeasuresAabb) {
-    auto policy = make_cost_policy(options(), {1.0, 0.001});
+    auto policy = make_cost_policy(options(), GpuCostPrior{1.0, 0.001});
     const Decision d = policy->decide(facts(1000));
     EXPECT_EQ(d.action, Action::Aabb);
     EXPECT_EQ(d.reason, k_reason_cost_probe);
@@ -41,7 +41,7 @@ TEST(CostPolicy, RunsTheCheapestAndProbesOthersOnlyWhenTheBudgetAllows) {
     // GPU prior: 1 + 0.001 * 1000 = 2 ms; hybrid before its first run: AABB + 1 ms.
     AdaptiveOptions o = options(0.1);
     o.use_hybrid = false;
-    auto policy = make_cost_policy(o, {1.0, 0.001});
+    auto policy = make_cost_policy(o, GpuCostPrior{1.0, 0.001});
     policy->decide(facts(1000));
     policy->observe(ran(Action::Aabb, 1.0));  // AABB 1 ms, GPU predicted 2 ms: extra 1 ms
     // The probe of the GPU is allowed once 0.1 x elapsed >= 1 ms: after 10 ms of frames.
@@ -65,7 +65,7 @@ TEST(CostPolicy, RunsTheCheapestAndProbesOthersOnlyWhenTheBudgetAllows) {
 TEST(CostPolicy, GpuEstimateScalesWithThePcsAndSwitchesWhenCheaper) {
     AdaptiveOptions o = options(1.0);
     o.use_hybrid = false;
-    auto policy = make_cost_policy(o, {1.0, 0.001});
+    auto policy = make_cost_policy(o, GpuCostPrior{1.0, 0.001});
     policy->decide(facts(1000));
     policy->observe(ran(Action::Aabb, 3.0));
     const Decision d = policy->decide(facts(1000));  // GPU predicted 2 < 3: cheapest
@@ -80,7 +80,7 @@ TEST(CostPolicy, GpuEstimateScalesWithThePcsAndSwitchesWhenCheaper) {
 TEST(CostPolicy, AFinishedRebuildIsMeasuredAtOnce) {
     AdaptiveOptions o = options(0.0);  // no probing by budget
     o.use_hybrid = false;
-    auto policy = make_cost_policy(o, {0.0, 0.001});
+    auto policy = make_cost_policy(o, GpuCostPrior{0.0, 0.001});
     policy->decide(facts(1000));
     policy->observe(ran(Action::Aabb, 5.0));
     Decision d = policy->decide(facts(1000));
@@ -105,7 +105,7 @@ TEST(CostPolicy, AFinishedRebuildIsMeasuredAtOnce) {
 }
 
 TEST(CostPolicy, HybridIsProbedAndKeptWhenItWins) {
-    auto policy = make_cost_policy(options(0.5), {10.0, 0.01});  // the GPU alone is hopeless
+    auto policy = make_cost_policy(options(0.5), GpuCostPrior{10.0, 0.01});  // the GPU alone is hopeless
     policy->decide(facts(1000));
     policy->observe(ran(Action::Aabb, 4.0));  // hybrid predicted 4 + 10: extra 10 ms
     Decision d;
@@ -123,13 +123,31 @@ TEST(CostPolicy, HybridIsProbedAndKeptWhenItWins) {
 }
 
 TEST(CostPolicy, WithoutGpuOnlyAabb) {
-    auto policy = make_cost_policy(options(1.0), {0.0, 0.0});
+    auto policy = make_cost_policy(options(1.0), GpuCostPrior{0.0, 0.0});
     FrameFacts f = facts(1000);
     f.gpu_available = false;
     for (int i = 0; i < 5; ++i) {
         EXPECT_EQ(policy->decide(f).action, Action::Aabb);
         policy->observe(ran(Action::Aabb, 10.0));
     }
+}
+
+}  // namespace
+}  // namespace collidescope::decision
+
+namespace collidescope::decision {
+namespace {
+
+TEST(CostPolicy, WithoutAPriorTheGpuStaysOutUntilItArrives) {
+    AdaptiveOptions o = options(1.0);
+    o.use_hybrid = false;
+    auto policy = make_cost_policy(o, std::nullopt);
+    for (int i = 0; i < 5; ++i) {  // AABB at 3 ms; a GPU at 2 ms would win, but nobody knows
+        EXPECT_EQ(policy->decide(facts(1000)).action, Action::Aabb);
+        policy->observe(ran(Action::Aabb, 3.0));
+    }
+    policy->set_gpu_prior({1.0, 0.001});
+    EXPECT_EQ(policy->decide(facts(1000)).action, Action::GpuImproved);
 }
 
 }  // namespace

@@ -11,7 +11,9 @@
 #include "collidescope/error.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <future>
 #include <random>
 
 namespace collidescope::decision {
@@ -65,15 +67,21 @@ public:
         } else if (config.adaptive.policy == AdaptivePolicy::Thesis) {
             m_policy = make_thesis_policy(config.adaptive, std::move(parts.uniform));
         } else {
-            GpuCostPrior prior = parts.prior.value_or(GpuCostPrior{});
-            if (!parts.prior && m_gpu_improved) prior = measure_gpu_prior(config.gpu);
-            m_policy = make_cost_policy(config.adaptive, prior);
+            m_policy = make_cost_policy(config.adaptive, parts.prior);
+            if (!parts.prior && m_gpu_improved) {
+                // On its own thread and GL context, so the first frames do not wait for it.
+                m_prior = std::async(std::launch::async,
+                                     [gpu = config.gpu, this] { return measure_gpu_prior(gpu, m_stop_prior); });
+            }
         }
     }
+
+    ~AdaptiveMethod() override { m_stop_prior = true; }  // m_prior's destructor then waits a frame at most
 
     std::string_view name() const override { return "adaptive"; }
 
     void detect(const FrameContext& context, std::vector<TrianglePair>& pairs, FrameStats& stats) override {
+        take_prior();
         FrameFacts facts;
         facts.gpu_available = m_gpu_improved != nullptr;
         facts.rebuild_finished = m_culler->rebuild_finished();
@@ -138,6 +146,15 @@ private:
         }
     }
 
+    // Hands the GPU prior to the policy once its thread finished (without it, the GPU stays out).
+    void take_prior() {
+        if (!m_prior.valid() || m_prior.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+        try {
+            m_policy->set_gpu_prior(m_prior.get());
+        } catch (const std::exception&) {  // no GL on that thread after all: the GPU stays out
+        }
+    }
+
     double timed(Method& method, const FrameContext& context, std::vector<TrianglePair>& pairs, FrameStats& stats) {
         const double start = m_clock();
         method.detect(context, pairs, stats);
@@ -151,6 +168,8 @@ private:
     std::unique_ptr<Method> m_gpu_improved;
     std::unique_ptr<Method> m_hybrid;
     std::unique_ptr<Policy> m_policy;
+    std::atomic<bool> m_stop_prior{false};
+    std::future<GpuCostPrior> m_prior;  // the cost policy's GPU prior, being measured
     std::uint8_t m_last_mode = 0;
     std::uint64_t m_last_inter_candidates = 0;  // candidate pairs of the last AABB run
 };

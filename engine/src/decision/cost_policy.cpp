@@ -24,7 +24,8 @@ constexpr std::array<Action, 3> k_actions = {Action::Aabb, Action::GpuImproved, 
 
 class CostPolicy final : public Policy {
 public:
-    CostPolicy(const AdaptiveOptions& options, GpuCostPrior prior) : m_options(options), m_prior(prior) {}
+    CostPolicy(const AdaptiveOptions& options, std::optional<GpuCostPrior> prior)
+        : m_options(options), m_prior(prior.value_or(GpuCostPrior{})), m_has_prior(prior.has_value()) {}
 
     Decision decide(const FrameFacts& facts) override {
         m_facts = facts;
@@ -33,7 +34,7 @@ public:
         }
         m_rebuild_asked = false;
         m_predicted = {m_estimate[k_aabb], gpu_prediction(facts.pcs_triangles), hybrid_prediction(facts.marked_triangles)};
-        if (std::isnan(m_estimate[k_aabb]) || !facts.gpu_available) return chosen(k_aabb, k_reason_cost_probe);
+        if (std::isnan(m_estimate[k_aabb]) || !facts.gpu_available || !m_has_prior) return chosen(k_aabb, k_reason_cost_probe);
         if (facts.rebuild_finished && m_rebuild_pending) {  // measure the rebuilt trees now
             m_rebuild_pending = false;
             return chosen(k_aabb, k_reason_cost_probe);
@@ -80,6 +81,11 @@ public:
         }
     }
 
+    void set_gpu_prior(const GpuCostPrior& prior) override {
+        m_prior = prior;
+        m_has_prior = true;
+    }
+
     DecisionInfo inputs() const override {
         DecisionInfo info;
         info.policy = 1;
@@ -120,6 +126,7 @@ private:
 
     AdaptiveOptions m_options;
     GpuCostPrior m_prior;
+    bool m_has_prior = false;
     FrameFacts m_facts;
     std::array<double, 3> m_estimate = {k_unmeasured, k_unmeasured, k_unmeasured};  // gpu: unused
     std::array<double, 3> m_predicted = {k_unmeasured, k_unmeasured, k_unmeasured};
@@ -131,7 +138,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Policy> make_cost_policy(const AdaptiveOptions& options, GpuCostPrior prior) {
+std::unique_ptr<Policy> make_cost_policy(const AdaptiveOptions& options, std::optional<GpuCostPrior> prior) {
     return std::make_unique<CostPolicy>(options, prior);
 }
 

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace collidescope::decision {
 namespace {
@@ -54,12 +55,18 @@ double time_frame(Method& method, std::uint32_t n, std::uint32_t index) {
 
 }  // namespace
 
-GpuCostPrior measure_gpu_prior(const GpuCullConfig& config) {
+GpuCostPrior measure_gpu_prior(const GpuCullConfig& config, const std::atomic<bool>& stop) {
     std::unique_ptr<Method> method = make_gpu_method(config);
     constexpr std::uint32_t k_small = 16, k_large = 48;  // 1,024 and 9,216 triangles in all
-    time_frame(*method, k_small, 0);  // warm up: shaders, buffers
-    const double small = std::min(time_frame(*method, k_small, 1), time_frame(*method, k_small, 2));
-    const double large = std::min(time_frame(*method, k_large, 3), time_frame(*method, k_large, 4));
+    std::uint32_t index = 0;
+    const auto frame_ms = [&](std::uint32_t n) {
+        if (stop) throw std::runtime_error("GPU calibration stopped");
+        return time_frame(*method, n, index++);
+    };
+    frame_ms(k_small);  // warm up: shaders, buffers
+    const double small = frame_ms(k_small);
+    frame_ms(k_large);  // warm up: the larger buffers
+    const double large = frame_ms(k_large);
     const double t_small = 2.0 * k_small * k_small * 2, t_large = 2.0 * k_large * k_large * 2;
     GpuCostPrior prior;
     prior.per_triangle_ms = std::max(0.0, (large - small) / (t_large - t_small));

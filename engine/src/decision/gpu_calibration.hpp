@@ -8,9 +8,12 @@
 
 #include "collidescope/gpu_cull.hpp"
 
+#include <atomic>
+
 namespace collidescope::decision {
 
-/// Measures the prior (a few tens of ms under llvmpipe). Throws UnavailableError without GL.
-GpuCostPrior measure_gpu_prior(const GpuCullConfig& config);
+/// Measures the prior (four GPU frames: a few hundred ms under llvmpipe). Throws
+/// UnavailableError without GL, and std::runtime_error when `stop` was set between frames.
+GpuCostPrior measure_gpu_prior(const GpuCullConfig& config, const std::atomic<bool>& stop);
 
 }  // namespace collidescope::decision

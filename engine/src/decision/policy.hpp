@@ -13,6 +13,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 
 namespace collidescope::decision {
 
@@ -57,6 +58,14 @@ struct Outcome {
     double frame_ms = 0;
 };
 
+/// A prior of the GPU cull's cost: ms = fixed_ms + per_triangle_ms * PCS triangles (the
+/// adaptive method measures it on a synthetic scene, on its own thread, while the first
+/// frames run).
+struct GpuCostPrior {
+    double fixed_ms = 0;
+    double per_triangle_ms = 0;
+};
+
 /// A policy: decide, then observe, once per frame, in that order.
 class Policy {
 public:
@@ -66,6 +75,9 @@ public:
     /// The policy's inputs as the trace shows them (times, exploration); the method fills
     /// mode, action, reason, switched, rebuilding and draw from the Decision.
     virtual DecisionInfo inputs() const = 0;
+    /// Hands over the GPU prior once it is measured (the cost policy needs it before it
+    /// considers the GPU; the thesis's ignores it).
+    virtual void set_gpu_prior(const GpuCostPrior&) {}
 };
 
 /// A uniform draw in [0, 1).
@@ -74,14 +86,8 @@ using Uniform = std::function<double()>;
 /// Algorithms 4 and 5 of the thesis.
 std::unique_ptr<Policy> make_thesis_policy(const AdaptiveOptions& options, Uniform uniform);
 
-/// A prior of the GPU cull's cost: ms = fixed_ms + per_triangle_ms * PCS triangles (the
-/// adaptive method measures it once, before the first frame, on a synthetic scene).
-struct GpuCostPrior {
-    double fixed_ms = 0;
-    double per_triangle_ms = 0;
-};
-
 /// Ours: the cheapest estimate runs; the others are re-probed within a time budget.
-std::unique_ptr<Policy> make_cost_policy(const AdaptiveOptions& options, GpuCostPrior prior);
+/// Until it has a prior (here or through set_gpu_prior), it treats the GPU as unavailable.
+std::unique_ptr<Policy> make_cost_policy(const AdaptiveOptions& options, std::optional<GpuCostPrior> prior);
 
 }  // namespace collidescope::decision
