@@ -90,8 +90,8 @@ public:
         DecisionInfo info;
         info.policy = 1;
         info.aabb_ms = m_predicted[k_aabb];
-        info.gpu_ms = m_predicted[k_gpu];
-        info.hybrid_ms = m_predicted[k_hybrid];
+        info.gpu_ms = m_has_prior ? m_predicted[k_gpu] : k_unmeasured;  // no prior yet: no estimate
+        info.hybrid_ms = m_has_prior ? m_predicted[k_hybrid] : k_unmeasured;
         info.rebuild_avg_ms = m_facts.rebuild_average_ms;
         info.exploration = m_options.probe_budget;
         return info;
