@@ -5,10 +5,12 @@
 #include "size_option.hpp"
 
 #include "collidescope/recorder/reader.hpp"
+#include "collidescope/stats.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -37,6 +39,46 @@ std::string format_ms(double ms) {
 }
 
 // Everything inspect reports, gathered once and printed as text or JSON.
+// Schema 1.2: the decision system's modes, switches, actions and reasons (/frames/decision),
+// and the frames that ran the hybrid framework (/frames/hybrid). NaN rows: no decision.
+void add_decisions(const recorder::Recording& rec, nlohmann::ordered_json& out) {
+    const auto column = [](const std::vector<recorder::Series<double>>& group, const char* name) {
+        for (const auto& series : group) {
+            if (series.name == name) return series.values;
+        }
+        return std::vector<double>{};
+    };
+    const auto decision = rec.frame_values("decision");
+    const std::vector<double> mode = column(decision, "mode");
+    const std::vector<double> action = column(decision, "action");
+    const std::vector<double> reason = column(decision, "reason");
+    std::map<std::string, std::uint64_t> modes, actions, reasons;
+    std::uint64_t decided = 0, switches = 0;
+    double previous = std::nan("");
+    for (std::size_t r = 0; r < mode.size(); ++r) {
+        if (std::isnan(mode[r])) continue;
+        ++decided;
+        ++modes["mode " + std::to_string(static_cast<int>(mode[r]))];
+        ++actions[decision_action_name(static_cast<std::uint8_t>(action[r]))];
+        ++reasons[decision_reason_name(static_cast<std::uint8_t>(reason[r]))];
+        if (!std::isnan(previous) && mode[r] != previous) ++switches;
+        previous = mode[r];
+    }
+    out["decision_frames"] = decided;
+    out["modes"] = modes;
+    out["mode_switches"] = switches;
+    out["decision_actions"] = actions;
+    out["decision_reasons"] = reasons;
+    const std::vector<double> wins = column(rec.frame_values("hybrid"), "predicted_hybrid_wins");
+    std::uint64_t hybrid_frames = 0, predicted_wins = 0;
+    for (const double w : wins) {
+        hybrid_frames += std::isnan(w) ? 0 : 1;
+        predicted_wins += w == 1.0 ? 1 : 0;
+    }
+    out["hybrid_frames"] = hybrid_frames;
+    out["hybrid_predicted_wins"] = predicted_wins;
+}
+
 nlohmann::ordered_json gather(const recorder::Recording& rec) {
     nlohmann::ordered_json out;
     out["file"] = rec.path();
@@ -67,6 +109,7 @@ nlohmann::ordered_json gather(const recorder::Recording& rec) {
     }
     out["methods"] = frames_per_method;
     out["method_switches"] = switches;
+    add_decisions(rec, out);
     const std::vector<std::uint64_t> pair_counts = rec.pair_counts();
     std::uint64_t total = 0, colliding_frames = 0, max_pairs = 0, max_frame = 0;
     for (std::size_t r = 0; r < pair_counts.size(); ++r) {
@@ -96,6 +139,11 @@ nlohmann::ordered_json gather(const recorder::Recording& rec) {
     return out;
 }
 
+void print_counts(const char* title, const nlohmann::ordered_json& counts) {
+    std::cout << title;
+    for (const auto& [name, frames] : counts.items()) std::cout << ' ' << name << " (" << frames << ")";
+}
+
 void print_text(const nlohmann::ordered_json& info) {
     const auto& meta = info["metadata"];
     const auto text = [&](const char* key) { return meta.contains(key) ? meta[key].get<std::string>() : std::string(); };
@@ -118,6 +166,17 @@ void print_text(const nlohmann::ordered_json& info) {
     std::cout << "methods:";
     for (const auto& [name, frames] : info["methods"].items()) std::cout << ' ' << name << " (" << frames << " frames)";
     std::cout << ", " << info["method_switches"] << " switches\n";
+    if (info["decision_frames"].get<std::uint64_t>() > 0) {
+        print_counts("modes (decision system):", info["modes"]);
+        std::cout << ", " << info["mode_switches"] << " switches\n";
+        print_counts("  actions:", info["decision_actions"]);
+        print_counts("; reasons:", info["decision_reasons"]);
+        std::cout << '\n';
+    }
+    if (info["hybrid_frames"].get<std::uint64_t>() > 0) {
+        std::cout << "hybrid framework: " << info["hybrid_frames"] << " frames, Inequality 4.16 predicted it wins on "
+                  << info["hybrid_predicted_wins"] << '\n';
+    }
     const auto& pairs = info["pairs"];
     std::cout << "pairs: " << pairs["total"] << " colliding pairs, " << pairs["frames_with_collisions"]
               << " frames with collisions, at most " << pairs["max_per_frame"] << " (frame " << pairs["max_frame"] << ")\n";

@@ -13,6 +13,15 @@ SCHEMA = "collidescope-trace"
 MAJOR = 1
 
 
+def attr_text(obj, name, default=None):
+    """String attribute NAME of OBJ as str. Schema 1.2 writes fixed-length strings, which h5py
+    returns as bytes; 1.0 and 1.1 wrote variable-length ones (str)."""
+    value = obj.attrs.get(name, default)
+    if isinstance(value, (bytes, np.bytes_)):
+        return value.decode("utf-8")
+    return value
+
+
 def open_recording(path):
     """Opens PATH read-only (SWMR, so a recording being written or killed opens too)."""
     try:
@@ -22,7 +31,7 @@ def open_recording(path):
             f = h5py.File(path, "r")
         except OSError as error:
             sys.exit("%s: cannot open as HDF5: %s" % (path, error))
-    if f.attrs.get("schema") != SCHEMA:
+    if attr_text(f, "schema") != SCHEMA:
         sys.exit("%s: not a collidescope recording" % path)
     major = int(f.attrs["schema_version_major"])
     if major > MAJOR:

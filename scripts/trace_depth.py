@@ -19,7 +19,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from trace_common import depth_image, depth_image_count, frames_complete, open_recording  # noqa: E402
+from trace_common import attr_text, depth_image, depth_image_count, frames_complete, open_recording  # noqa: E402
 
 AXES = "xyz"
 
@@ -36,7 +36,7 @@ def main():
         frames = list(f["frames/index"][:n])
         counts = [depth_image_count(f, r) for r in range(n)]
         if sum(counts) == 0:
-            print("no depth buffers in this recording (--depth %s)" % f.attrs.get("depth", "off"))
+            print("no depth buffers in this recording (--depth %s)" % attr_text(f, "depth", "off"))
             return 0
         if args.frame is None:
             row = next(r for r in range(n) if counts[r] > 0)
@@ -49,7 +49,7 @@ def main():
             sys.exit("%s: frame %d has %d depth images (frames with some: %s)"
                      % (args.recording, frames[row], counts[row], ", ".join(map(str, with_depth[:20]))))
         image = depth_image(f, row, args.image)
-        unit = f["gpu/depth/range"].attrs["unit"]
+        unit = attr_text(f["gpu/depth/range"], "unit")
     near, far = image["near"], image["far"]
     world = np.where(image["depth"] < 1.0, near + image["depth"] * (far - near), np.nan)
     view = image["view"]

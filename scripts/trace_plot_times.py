@@ -1,10 +1,12 @@
 #!/usr/bin/python3
-"""Plots per-frame time coloured by the method in force.
+"""Plots per-frame time coloured by the mode (or method) in force.
 
 Usage: trace_plot_times.py RUN.h5 [-o times.png] [--stage total]
 
 One point per frame (x: scene frame, y: the stage's milliseconds from /frames/ms/<stage>),
-coloured by /frames/method, with a legend per method. Writes a PNG (matplotlib, Agg).
+coloured by the decision system's mode (/frames/decision/mode, schema 1.2, on the frames it
+decided: "mode 1" / "mode 2") and by /frames/method on the others, with a legend. Writes a PNG
+(matplotlib, Agg).
 """
 import argparse
 import sys
@@ -14,7 +16,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from trace_common import frames_complete, methods, open_recording  # noqa: E402
+from trace_common import attr_text, frames_complete, methods, open_recording  # noqa: E402
 
 
 def main():
@@ -29,8 +31,12 @@ def main():
         n = frames_complete(f)
         frames = f["frames/index"][:n]
         ms = f["frames/ms/" + args.stage][:n]
-        unit = f["frames/ms/" + args.stage].attrs["unit"]
+        unit = attr_text(f["frames/ms/" + args.stage], "unit")
         per_frame = methods(f, n)
+        if "frames/decision/mode" in f:
+            present = f["frames/decision/present"][:n]
+            mode = f["frames/decision/mode"][:n]
+            per_frame = ["mode %d" % int(m) if p else name for p, m, name in zip(present, mode, per_frame)]
     fig, ax = plt.subplots(figsize=(10, 4))
     for name in sorted(set(per_frame)):
         xs = [x for x, m in zip(frames, per_frame) if m == name]
@@ -39,8 +45,8 @@ def main():
     ax.plot(frames, ms, "-", color="0.8", linewidth=0.8, zorder=0)
     ax.set_xlabel("frame")
     ax.set_ylabel("%s (%s)" % (args.stage, unit))
-    ax.set_title("%s: %s per frame, coloured by method" % (args.recording, args.stage))
-    ax.legend(title="method")
+    ax.set_title("%s: %s per frame, coloured by mode or method" % (args.recording, args.stage))
+    ax.legend(title="mode / method")
     fig.tight_layout()
     fig.savefig(args.output, dpi=100)
     print("wrote %s (%d frames)" % (args.output, n))

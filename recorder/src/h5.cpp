@@ -42,6 +42,15 @@ void Where::check(herr_t status, const std::string& what) const {
     if (status < 0) fail(what);
 }
 
+void keep_compact(const Where& where, hid_t plist, const std::string& what) {
+    // Links and attributes stay in the object header (checksummed in the latest format) instead
+    // of "dense" storage in a fractal heap, whose blocks carry no checksum by default: HDF5
+    // 1.10.8 frees a garbage pointer iterating a group whose dense link storage is corrupt
+    // (tests/recorder/test_corruption.cpp found it).
+    where.check(H5Pset_link_phase_change(plist, k_max_compact, k_max_compact), "cannot keep the links of " + what + " compact");
+    where.check(H5Pset_attr_phase_change(plist, k_max_compact, k_max_compact), "cannot keep the attributes of " + what + " compact");
+}
+
 Id open_group(const Where& where, hid_t loc, const std::string& name) {
     return where.own(H5Gopen2(loc, name.c_str(), H5P_DEFAULT), H5Gclose, "cannot open group " + name);
 }
@@ -51,6 +60,7 @@ Id create_group(const Where& where, hid_t loc, const std::string& name) {
     // Track creation order, so readers list stages and counts in the engine's order.
     where.check(H5Pset_link_creation_order(plist.get(), H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED),
                 "cannot set creation order on " + name);
+    keep_compact(where, plist.get(), name);
     return where.own(H5Gcreate2(loc, name.c_str(), H5P_DEFAULT, plist.get(), H5P_DEFAULT), H5Gclose,
                      "cannot create group " + name);
 }
@@ -98,14 +108,16 @@ std::vector<std::string> member_names(const Where& where, hid_t group, const std
 }
 
 void write_attr(const Where& where, hid_t obj, const std::string& name, const std::string& value) {
+    // Fixed length, null-terminated (schema 1.2): a variable-length string lives in the global
+    // heap, which has no checksum, and HDF5 1.10.8 can crash reading a corrupt one.
     const Id type = where.own(H5Tcopy(H5T_C_S1), H5Tclose, "cannot make a string type");
-    where.check(H5Tset_size(type.get(), H5T_VARIABLE), "cannot make a string type");
+    where.check(H5Tset_size(type.get(), value.size() + 1), "cannot make a string type");
+    where.check(H5Tset_strpad(type.get(), H5T_STR_NULLTERM), "cannot make a string type");
     where.check(H5Tset_cset(type.get(), H5T_CSET_UTF8), "cannot make a string type");
     const Id space = where.own(H5Screate(H5S_SCALAR), H5Sclose, "cannot make a dataspace");
     const Id attr = where.own(H5Acreate2(obj, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
                               H5Aclose, "cannot create attribute " + name);
-    const char* text = value.c_str();
-    where.check(H5Awrite(attr.get(), type.get(), &text), "cannot write attribute " + name);
+    where.check(H5Awrite(attr.get(), type.get(), value.c_str()), "cannot write attribute " + name);
 }
 
 void write_attr(const Where& where, hid_t obj, const std::string& name, std::int64_t value) {

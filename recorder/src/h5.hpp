@@ -53,6 +53,12 @@ private:
     std::string m_file;
 };
 
+/// Links or attributes an object keeps in its (checksummed) header before moving them to dense
+/// storage (a fractal heap without checksums).
+inline constexpr unsigned k_max_compact = 1000;
+/// Sets both phase changes of a group or file creation property list to k_max_compact.
+void keep_compact(const Where& where, hid_t plist, const std::string& what);
+
 Id open_group(const Where& where, hid_t loc, const std::string& name);
 Id create_group(const Where& where, hid_t loc, const std::string& name);
 Id open_dataset(const Where& where, hid_t loc, const std::string& name);
@@ -60,7 +66,8 @@ bool exists(hid_t loc, const std::string& path);
 /// Names of the members of group `group`, in creation order where tracked, else by name.
 std::vector<std::string> member_names(const Where& where, hid_t group, const std::string& what);
 
-// Attributes: strings are variable-length UTF-8 (h5py reads them as str); numbers scalar.
+// Attributes: strings are written fixed-length, null-terminated UTF-8 (read: both kinds);
+// numbers scalar.
 void write_attr(const Where& where, hid_t obj, const std::string& name, const std::string& value);
 void write_attr(const Where& where, hid_t obj, const std::string& name, std::int64_t value);
 bool has_attr(hid_t obj, const std::string& name);

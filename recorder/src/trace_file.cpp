@@ -40,7 +40,9 @@ TraceFile::TraceFile(const std::filesystem::path& path, const SessionInfo& sessi
     // SWMR needs the latest file format.
     m_where.check(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST),
                   "cannot select the latest file format");
-    m_file = m_where.own(H5Fcreate(m_where.file().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose,
+    const h5::Id fcpl = m_where.own(H5Pcreate(H5P_FILE_CREATE), H5Pclose, "cannot create a property list");
+    h5::keep_compact(m_where, fcpl.get(), "/");  // the root group: its links and its attributes
+    m_file = m_where.own(H5Fcreate(m_where.file().c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get()), H5Fclose,
                          "cannot create the recording (is the directory writable?)");
     write_metadata(session);
     create_frames(methods);

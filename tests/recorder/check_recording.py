@@ -11,10 +11,15 @@ import h5py
 import numpy as np
 
 
+def text(value):
+    """A string attribute as str: fixed-length ones (schema 1.2) come back from h5py as bytes."""
+    return value.decode("utf-8") if isinstance(value, (bytes, np.bytes_)) else value
+
+
 def main(path, pairs_tsv, stats_jsonl):
     problems = []
     with h5py.File(path, "r", swmr=True) as f:
-        if f.attrs["schema"] != "collidescope-trace" or f.attrs["schema_version_major"] != 1:
+        if text(f.attrs["schema"]) != "collidescope-trace" or f.attrs["schema_version_major"] != 1:
             problems.append("schema attributes: %r %r" % (f.attrs.get("schema"), f.attrs.get("schema_version_major")))
         frames = f["frames/index"][:]
         offsets = f["collisions/offsets"][:]

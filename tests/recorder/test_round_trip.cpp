@@ -110,11 +110,14 @@ TEST(RecorderRoundTrip, TopologyChangesAreRecordedFromTheirFrame) {
 // `record` and `check` on the same input: the recorded pairs are check's TSV, the recorded
 // counts check's stats; then h5py reads the same (tests/recorder/check_recording.py).
 void expect_record_matches_check(const std::vector<std::string>& input, const TempDir& dir) {
-    std::vector<std::string> record_args = {"record", "-o", "run.h5", "-q"};
+    // brute: deterministic counts (adaptive, the default, and aabb's rebuild policy decide from
+    // measured times).
+    std::vector<std::string> record_args = {"record", "-o", "run.h5", "-q", "--method", "brute"};
     record_args.insert(record_args.end(), input.begin(), input.end());
     const testing::CliResult recorded = testing::run_cli(record_args, dir.path());
     ASSERT_EQ(recorded.exit_code, 0) << recorded.err;
-    std::vector<std::string> check_args = {"check", "--pairs", "pairs.tsv", "--stats", "stats.jsonl", "--exit-zero", "-q"};
+    std::vector<std::string> check_args = {"check", "--pairs", "pairs.tsv", "--stats", "stats.jsonl", "--exit-zero", "-q",
+                                           "--method", "brute"};
     check_args.insert(check_args.end(), input.begin(), input.end());
     const testing::CliResult checked = testing::run_cli(check_args, dir.path());
     ASSERT_EQ(checked.exit_code, 0) << checked.err;
