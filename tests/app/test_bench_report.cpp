@@ -7,6 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
 namespace collidescope {
 namespace {
 
@@ -65,6 +69,36 @@ TEST(BenchReport, HybridAnalysisCountsCorrectPredictions) {
     const std::string text = app::hybrid_analysis({scene});
     EXPECT_NE(text.find("on 2 of 3 frames (predicted hybrid 2, hybrid won 1)"), std::string::npos) << text;
     EXPECT_NE(text.find("TRI_1 10"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace collidescope
+
+namespace collidescope {
+namespace {
+
+// scripts/bench_oracle.py on a hand-made frames.csv: both oracles, for the adaptive rows only.
+TEST(BenchOracleScript, ComputesBothOracles) {
+    const std::filesystem::path csv = std::filesystem::temp_directory_path() / "collidescope_bench_oracle_frames.csv";
+    {
+        std::ofstream out(csv);
+        out << "scene,preset,method,frame,ms_total\n"
+               "X,small,aabb,0,1.0\nX,small,aabb,1,5.0\n"
+               "X,small,aabb-thesis,0,0.5\nX,small,aabb-thesis,1,6.0\n"
+               "X,small,gpu,0,3.0\nX,small,gpu,1,2.0\n"
+               "X,small,adaptive-cost,0,1.0\nX,small,adaptive-cost,1,2.0\n";
+    }
+    const std::string command = "/usr/bin/python3 '" COLLIDESCOPE_SOURCE_DIR "/scripts/bench_oracle.py' '" + csv.string() + "'";
+    FILE* pipe = popen(command.c_str(), "r");
+    ASSERT_NE(pipe, nullptr);
+    std::string output;
+    char buffer[256];
+    while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) output += buffer;
+    ASSERT_EQ(pclose(pipe), 0) << output;
+    std::filesystem::remove(csv);
+    // all fixed: 0.5 + 2 = 2.5; candidates (aabb, gpu): 1 + 2 = 3; adaptive: 3.
+    EXPECT_NE(output.find("X:small,adaptive-cost,3.000,1.200,1.000"), std::string::npos) << output;
+    EXPECT_NE(output.find("X:small,aabb,6.000,,"), std::string::npos) << output;
 }
 
 }  // namespace
