@@ -12,6 +12,7 @@
 #include "collidescope/mesh.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
 
@@ -71,6 +72,43 @@ TEST_F(TraceScripts, DepthSaysThereAreNone) {
     const ScriptResult depth = run_script("trace_depth.py", {"run.h5"}, m_dir);
     EXPECT_EQ(depth.exit_code, 0) << depth.out;
     EXPECT_NE(depth.out.find("no depth buffers in this recording"), std::string::npos) << depth.out;
+}
+
+// A recording with depth images: the script draws one (a PNG with a colour bar) and names it.
+TEST_F(TraceScripts, DepthDrawsARecordedImage) {
+    ASSERT_EQ(run_cli({"record", "--scene", "C:small", "--method", "gpu", "--gpu-resolution", "64", "--depth", "every:4",
+                       "--frames", "0:5", "-o", "depth.h5", "-q"},
+                      m_dir.path())
+                  .exit_code,
+              0);
+    const ScriptResult depth = run_script("trace_depth.py", {"depth.h5", "--frame", "4", "-o", "depth.png"}, m_dir);
+    ASSERT_EQ(depth.exit_code, 0) << depth.out;
+    EXPECT_NE(depth.out.find("frame 4, image 0"), std::string::npos) << depth.out;
+    EXPECT_NE(depth.out.find("input length unit"), std::string::npos) << depth.out;
+    const std::string png = testing::read_text(m_dir.path() / "depth.png");
+    ASSERT_GT(png.size(), 1000u);
+    EXPECT_EQ(png.substr(1, 3), "PNG");
+    const ScriptResult none = run_script("trace_depth.py", {"depth.h5", "--frame", "1"}, m_dir);
+    EXPECT_EQ(none.exit_code, 1) << "frame 1 has no depth image: " << none.out;
+}
+
+// An adaptive recording: inspect reports the decision system's modes and switches.
+TEST_F(TraceScripts, InspectReportsModesOfTheDecisionSystem) {
+    ASSERT_EQ(run_cli({"record", "--scene", "demo:small", "--method", "adaptive", "-o", "adaptive.h5", "-q"}, m_dir.path())
+                  .exit_code,
+              0);
+    const testing::CliResult inspect = run_cli({"inspect", "--json", "adaptive.h5"}, m_dir.path());
+    ASSERT_EQ(inspect.exit_code, 0) << inspect.err;
+    const nlohmann::json info = nlohmann::json::parse(inspect.out);
+    EXPECT_EQ(info["decision_frames"], info["frames"]);
+    std::uint64_t frames = 0;
+    for (const auto& [mode, count] : info["modes"].items()) frames += count.get<std::uint64_t>();
+    EXPECT_EQ(frames, info["frames"].get<std::uint64_t>());
+    EXPECT_TRUE(info.contains("mode_switches"));
+    ASSERT_EQ(run_cli({"record", "--scene", "demo:small", "--method", "brute", "-o", "brute.h5", "-q"}, m_dir.path()).exit_code, 0);
+    const testing::CliResult brute = run_cli({"inspect", "--json", "brute.h5"}, m_dir.path());
+    ASSERT_EQ(brute.exit_code, 0);
+    EXPECT_EQ(nlohmann::json::parse(brute.out)["decision_frames"], 0) << "no decision system: no modes";
 }
 
 TEST_F(TraceScripts, CompareFindsAPlantedDifference) {
