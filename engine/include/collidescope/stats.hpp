@@ -203,7 +203,10 @@ struct HybridFrameInfo {
     std::uint64_t tri_2 = 0;  ///< TRI_2: triangle pairs left after the AABB and GPU culls
     double a_i_ms = 0;        ///< A_I: measured ms per AABB node test
     double t_i_ms = 0;        ///< T_I: measured ms per triangle-triangle test
-    double o_ms = 0;          ///< O: measured ms per occlusion query (per rendered triangle with flags)
+    /// O: measured GPU cull ms per rendered triangle (render + readback over TRI_R), the
+    /// thesis's O under its assumption of one query per triangle; GpuFrameInfo::query_ms keeps
+    /// the cost per occlusion query.
+    double o_ms = 0;
     double unculled = 0;      ///< P_C: TRI_2 / TRI_1, the share the GPU left (1 when TRI_1 = 0)
     double pure_aabb_ms = 0;  ///< Equation 4.11 evaluated: A1·A_I + TRI_1·T_I
     double hybrid_ms = 0;     ///< Equation 4.12 evaluated: A1·A_I + TRI_R·O + A2·A_I + TRI_2·T_I
