@@ -48,12 +48,15 @@ TEST_P(DataSets, HybridAndAdaptiveMatchBruteEveryFrame) {
     }
     PipelineConfig config;
     config.self_collision = scene.self_collision;
+    config.adaptive.calibration_ms = 0;  // the cost policy measures the GPU at once and probes eagerly,
+    config.adaptive.probe_budget = 1.0;  // so its GPU and hybrid paths run here too
     Pipeline brute(config);
     std::vector<std::unique_ptr<Pipeline>> pipelines;
     for (const char* method : k_methods) {
         config.method = method;
         pipelines.push_back(std::make_unique<Pipeline>(config));
     }
+    std::uint32_t cost_gpu_frames = 0;  // frames where adaptive-cost ran something else than AABB
     for (std::uint32_t f = 0; f < scene.source->frame_count(); ++f) {
         const Frame frame = scene.source->frame(f);
         const std::vector<TrianglePair> expected = brute.process(frame).colliding_pairs;
@@ -63,8 +66,10 @@ TEST_P(DataSets, HybridAndAdaptiveMatchBruteEveryFrame) {
             if (m > 0) {
                 ASSERT_TRUE(result.stats.decision.has_value());
             }
+            if (m == 2 && result.stats.decision->action != k_action_aabb) ++cost_gpu_frames;
         }
     }
+    if (GetParam() != "A") EXPECT_GT(cost_gpu_frames, 0u) << "the cost policy never left AABB: its GPU paths went untested";
 }
 
 INSTANTIATE_TEST_SUITE_P(Small, DataSets, ::testing::Values("A", "B", "C", "D", "E1", "E2", "E3", "E4", "demo"),
@@ -80,6 +85,8 @@ TEST(HybridAndAdaptive, RandomScenesWithAndWithoutSelfCollision) {
                 config.method = method;
                 config.self_collision = self;
                 config.gpu.resolution = 16;  // coarse: the cull must stay conservative anyway
+                config.adaptive.calibration_ms = 0;
+                config.adaptive.probe_budget = 1.0;
                 Pipeline pipeline(config);
                 for (const Frame& frame : testing::all_frames(scene)) {
                     ASSERT_EQ(pipeline.process(frame).colliding_pairs, reference_colliding_pairs(frame, self))

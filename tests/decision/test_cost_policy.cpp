@@ -138,14 +138,24 @@ TEST(CostPolicy, WithoutGpuOnlyAabb) {
 namespace collidescope::decision {
 namespace {
 
-TEST(CostPolicy, WithoutAPriorTheGpuStaysOutUntilItArrives) {
-    AdaptiveOptions o = options(1.0);
+TEST(CostPolicy, WithoutAPriorTheGpuStaysOutAndThePriorIsAskedForOnceAffordable) {
+    AdaptiveOptions o = options(0.5);
     o.use_hybrid = false;
+    o.calibration_ms = 10;  // asked for once 0.5 x elapsed >= 10 ms: after 20 ms of frames
     auto policy = make_cost_policy(o, std::nullopt);
-    for (int i = 0; i < 5; ++i) {  // AABB at 3 ms; a GPU at 2 ms would win, but nobody knows
-        EXPECT_EQ(policy->decide(facts(1000)).action, Action::Aabb);
+    int frames = 0;
+    Decision d;
+    for (;;) {  // AABB at 3 ms; a GPU at 2 ms would win, but nobody knows
+        d = policy->decide(facts(1000));
+        EXPECT_EQ(d.action, Action::Aabb);
         policy->observe(ran(Action::Aabb, 3.0));
+        if (d.calibrate) break;
+        ASSERT_LT(++frames, 100);
     }
+    EXPECT_EQ(frames, 7);  // 7 frames x 3 ms = 21 ms >= 20 ms
+    EXPECT_TRUE(std::isnan(policy->inputs().gpu_ms));
+    EXPECT_FALSE(policy->decide(facts(1000)).calibrate);  // asked once only
+    policy->observe(ran(Action::Aabb, 3.0));
     policy->set_gpu_prior({1.0, 0.001});
     EXPECT_EQ(policy->decide(facts(1000)).action, Action::GpuImproved);
 }

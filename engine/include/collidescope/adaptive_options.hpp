@@ -25,6 +25,10 @@ struct AdaptiveOptions {
     double probe_budget = 0.03;
     /// Cost: weight of a new measurement in an estimate (exponential moving average).
     double smoothing = 0.5;
+    /// Cost: what the policy expects measuring the GPU prior to cost (ms). The measurement runs
+    /// inside a frame once probe_budget x (ms of the run so far) reaches this, so short runs
+    /// never pay for it.
+    double calibration_ms = 100;
     /// Cost: whether the hybrid framework is among the candidates.
     bool use_hybrid = true;
     std::uint64_t seed = 1;  ///< seeds the exploration draws

@@ -68,20 +68,13 @@ public:
             m_policy = make_thesis_policy(config.adaptive, std::move(parts.uniform));
         } else {
             m_policy = make_cost_policy(config.adaptive, parts.prior);
-            if (!parts.prior && m_gpu_improved) {
-                // On its own thread and GL context, so the first frames do not wait for it.
-                m_prior = std::async(std::launch::async,
-                                     [gpu = config.gpu, this] { return measure_gpu_prior(gpu, m_stop_prior); });
-            }
+            m_gpu_config = config.gpu;
         }
     }
-
-    ~AdaptiveMethod() override { m_stop_prior = true; }  // m_prior's destructor then waits a frame at most
 
     std::string_view name() const override { return "adaptive"; }
 
     void detect(const FrameContext& context, std::vector<TrianglePair>& pairs, FrameStats& stats) override {
-        take_prior();
         FrameFacts facts;
         facts.gpu_available = m_gpu_improved != nullptr;
         facts.rebuild_finished = m_culler->rebuild_finished();
@@ -98,6 +91,7 @@ public:
             m_culler->start_rebuild(context.frame, aabb_info);
             stats.aabb = aabb_info;
         }
+        if (decision.calibrate) calibrate();  // inside the frame: its time is the frame's
         Outcome outcome;
         switch (decision.action) {
         case Action::Aabb: outcome.aabb_ms = timed(*m_aabb, context, pairs, stats); break;
@@ -146,12 +140,12 @@ private:
         }
     }
 
-    // Hands the GPU prior to the policy once its thread finished (without it, the GPU stays out).
-    void take_prior() {
-        if (!m_prior.valid() || m_prior.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+    // Measures the GPU prior for the policy (without it, the GPU stays out).
+    void calibrate() {
         try {
-            m_policy->set_gpu_prior(m_prior.get());
-        } catch (const std::exception&) {  // no GL on that thread after all: the GPU stays out
+            const std::atomic<bool> never{false};
+            m_policy->set_gpu_prior(measure_gpu_prior(m_gpu_config, never));
+        } catch (const std::exception&) {  // no GL after all: the GPU stays out
         }
     }
 
@@ -168,8 +162,7 @@ private:
     std::unique_ptr<Method> m_gpu_improved;
     std::unique_ptr<Method> m_hybrid;
     std::unique_ptr<Policy> m_policy;
-    std::atomic<bool> m_stop_prior{false};
-    std::future<GpuCostPrior> m_prior;  // the cost policy's GPU prior, being measured
+    GpuCullConfig m_gpu_config;  // for the GPU prior's measurement
     std::uint8_t m_last_mode = 0;
     std::uint64_t m_last_inter_candidates = 0;  // candidate pairs of the last AABB run
 };

@@ -34,7 +34,13 @@ public:
         }
         m_rebuild_asked = false;
         m_predicted = {m_estimate[k_aabb], gpu_prediction(facts.pcs_triangles), hybrid_prediction(facts.marked_triangles)};
-        if (std::isnan(m_estimate[k_aabb]) || !facts.gpu_available || !m_has_prior) return chosen(k_aabb, k_reason_cost_probe);
+        if (std::isnan(m_estimate[k_aabb]) || !facts.gpu_available) return chosen(k_aabb, k_reason_cost_probe);
+        if (!m_has_prior) {  // the GPU is unknown: measure its prior once the budget affords it
+            Decision decision = chosen(k_aabb, k_reason_cost_cheapest);
+            decision.calibrate = !m_calibration_asked && m_options.probe_budget * m_elapsed >= m_options.calibration_ms;
+            m_calibration_asked = m_calibration_asked || decision.calibrate;
+            return decision;
+        }
         if (facts.rebuild_finished && m_rebuild_pending) {  // measure the rebuilt trees now
             m_rebuild_pending = false;
             return chosen(k_aabb, k_reason_cost_probe);
@@ -62,6 +68,7 @@ public:
 
     void observe(const Outcome& outcome) override {
         for (double& since : m_since) since += outcome.frame_ms;
+        m_elapsed += outcome.frame_ms;
         const double alpha = m_options.smoothing;
         const auto blend = [alpha](double& estimate, double measured) {
             estimate = std::isnan(estimate) ? measured : (1 - alpha) * estimate + alpha * measured;
@@ -127,6 +134,8 @@ private:
     AdaptiveOptions m_options;
     GpuCostPrior m_prior;
     bool m_has_prior = false;
+    bool m_calibration_asked = false;  // asked once; a failed measurement is not retried
+    double m_elapsed = 0;              // ms of every frame so far
     FrameFacts m_facts;
     std::array<double, 3> m_estimate = {k_unmeasured, k_unmeasured, k_unmeasured};  // gpu: unused
     std::array<double, 3> m_predicted = {k_unmeasured, k_unmeasured, k_unmeasured};

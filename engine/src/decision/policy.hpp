@@ -47,6 +47,7 @@ struct Decision {
     std::uint8_t mode = 1;                       ///< the mode this frame runs in
     bool start_rebuild = false;                  ///< Rebuild In Thread before running
     double draw = k_unmeasured;                  ///< the exploration draw, when one was made
+    bool calibrate = false;                      ///< measure the GPU prior (set_gpu_prior) this frame
 };
 
 /// What a frame measured: detection times (ms) of what ran; NaN for what did not.
@@ -59,8 +60,7 @@ struct Outcome {
 };
 
 /// A prior of the GPU cull's cost: ms = fixed_ms + per_triangle_ms * PCS triangles (the
-/// adaptive method measures it on a synthetic scene, on its own thread, while the first
-/// frames run).
+/// adaptive method measures it on a synthetic scene when the cost policy asks, inside a frame).
 struct GpuCostPrior {
     double fixed_ms = 0;
     double per_triangle_ms = 0;
@@ -87,7 +87,8 @@ using Uniform = std::function<double()>;
 std::unique_ptr<Policy> make_thesis_policy(const AdaptiveOptions& options, Uniform uniform);
 
 /// Ours: the cheapest estimate runs; the others are re-probed within a time budget.
-/// Until it has a prior (here or through set_gpu_prior), it treats the GPU as unavailable.
+/// Until it has a prior (here or through set_gpu_prior), it treats the GPU as unavailable, and
+/// asks for one (Decision::calibrate) once the run is long enough to afford it.
 std::unique_ptr<Policy> make_cost_policy(const AdaptiveOptions& options, std::optional<GpuCostPrior> prior);
 
 }  // namespace collidescope::decision
