@@ -47,10 +47,10 @@ public:
 
     void detect(const FrameContext& context, std::vector<TrianglePair>& pairs, FrameStats& stats) override {
         std::vector<TrianglePair> candidates;
-        m_culler.cull(context, candidates, stats);
-        const double traversal_ms = stats.ms.traversal;
+        const TraversalStats traversal = m_culler.cull(context, candidates, stats);
+        const double before = m_culler.now();
         narrow_phase(context.frame, candidates, pairs, stats);
-        m_culler.set_detection_ms(traversal_ms + stats.ms.narrow);
+        m_culler.set_detection_ms(traversal.ms + (m_culler.now() - before));
     }
 
 private:

@@ -90,10 +90,11 @@ public:
     double rebuild_average_ms() const;
     /// The objects the last cull() used.
     const std::vector<std::uint32_t>& used() const { return m_used; }
-
-private:
+    /// Milliseconds on the culler's clock (AabbConfig::clock_ms): the methods that share it
+    /// time their narrow phase with it, so a scripted clock scripts the whole detection time.
     double now() const { return m_config.clock_ms(); }
 
+private:
     AabbConfig m_config;
     std::unique_ptr<ObjectTrees> m_trees;
     std::vector<std::uint32_t> m_used;

@@ -31,8 +31,9 @@ public:
     void detect(const FrameContext& context, std::vector<TrianglePair>& pairs, FrameStats& stats) override {
         std::vector<TrianglePair> candidates;
         const bvh::TraversalStats traversal = m_culler->cull(context, candidates, stats);
+        const double before = m_culler->now();
         narrow_phase(context.frame, candidates, pairs, stats);
-        m_culler->set_detection_ms(traversal.ms + stats.ms.narrow);
+        m_culler->set_detection_ms(traversal.ms + (m_culler->now() - before));
     }
 
 private:
@@ -50,11 +51,19 @@ std::uint64_t pcs_triangles(const FrameContext& context) {
     return triangles;
 }
 
+// The AABB trees' configuration, on the adaptive method's clock (so that a scripted clock
+// scripts the rebuild times the policy sees too).
+bvh::AabbConfig culler_config(const AabbOptions& options, const std::function<double()>& clock) {
+    bvh::AabbConfig config = bvh::aabb_config(options);
+    config.clock_ms = clock;
+    return config;
+}
+
 class AdaptiveMethod final : public Method {
 public:
     AdaptiveMethod(const PipelineConfig& config, AdaptiveParts parts)
         : m_clock(parts.clock_ms ? std::move(parts.clock_ms) : std::function<double()>(&steady_ms)),
-          m_culler(std::make_shared<bvh::AabbCuller>(bvh::aabb_config(config.aabb))),
+          m_culler(std::make_shared<bvh::AabbCuller>(culler_config(config.aabb, m_clock))),
           m_aabb(std::make_unique<SharedAabbMethod>(m_culler)) {
         if (!parts.without_gpu) make_gpu_methods(config);
         if (!parts.uniform) {
@@ -79,7 +88,7 @@ public:
         facts.gpu_available = m_gpu_improved != nullptr;
         facts.rebuild_finished = m_culler->rebuild_finished();
         facts.rebuild_running = m_culler->rebuild_in_flight() && !facts.rebuild_finished;
-        facts.rebuild_average_ms = m_culler->rebuild_average_ms();
+        facts.rebuild_average_ms = m_rebuild_count > 0 ? m_rebuild_sum / m_rebuild_count : 0.0;
         facts.pcs_triangles = pcs_triangles(context);
         facts.marked_triangles = std::min(facts.pcs_triangles, 2 * m_last_inter_candidates);
         const Decision decision = m_policy->decide(facts);
@@ -112,6 +121,10 @@ public:
         }
         outcome.frame_ms = m_clock() - start;
         if (!std::isnan(outcome.aabb_ms)) m_last_inter_candidates = stats.counts.candidate_pairs;
+        if (stats.aabb && stats.aabb->rebuilt_objects > 0) {  // AABB Rebuild Average: engine-thread builds
+            m_rebuild_sum += stats.ms.rebuild;
+            ++m_rebuild_count;
+        }
         m_policy->observe(outcome);
 
         info.mode = decision.mode;
@@ -165,6 +178,8 @@ private:
     GpuCullConfig m_gpu_config;  // for the GPU prior's measurement
     std::uint8_t m_last_mode = 0;
     std::uint64_t m_last_inter_candidates = 0;  // candidate pairs of the last AABB run
+    double m_rebuild_sum = 0;   // ms.rebuild of the frames that built hierarchies on the engine thread
+    std::uint32_t m_rebuild_count = 0;
 };
 
 }  // namespace

@@ -59,8 +59,9 @@ public:
         info.tri_1 = inter.size();
         if (!inter.empty()) cull_and_retraverse(context, inter, candidates, info, stats);
         stats.counts.candidate_pairs = candidates.size();
+        const double before = m_culler->now();
         narrow_phase(frame, candidates, pairs, stats);
-        m_culler->set_detection_ms(traversal.ms + stats.ms.narrow);
+        m_culler->set_detection_ms(traversal.ms + (m_culler->now() - before));
         analyse(info, traversal.ms, stats);
         stats.hybrid = info;
     }

@@ -12,6 +12,20 @@
 namespace collidescope {
 namespace {
 
+// A method under another registry name (a configuration of it): stats say which one ran.
+class NamedMethod final : public Method {
+public:
+    NamedMethod(std::string_view name, std::unique_ptr<Method> inner) : m_name(name), m_inner(std::move(inner)) {}
+    std::string_view name() const override { return m_name; }
+    void detect(const FrameContext& context, std::vector<TrianglePair>& pairs, FrameStats& stats) override {
+        m_inner->detect(context, pairs, stats);
+    }
+
+private:
+    std::string_view m_name;  // a literal of k_methods
+    std::unique_ptr<Method> m_inner;
+};
+
 struct MethodEntry {
     std::string_view name;
     std::unique_ptr<Method> (*make)(const PipelineConfig& config);
@@ -27,22 +41,22 @@ constexpr MethodEntry k_methods[] = {
          naive.naive = true;
          return make_gpu_method(naive);
      }},
-    {"aabb-thesis", [](const PipelineConfig& config) {  // the thesis's AABB baseline: 5.2.1's 3/4 rule
+    {"aabb-thesis", [](const PipelineConfig& config) -> std::unique_ptr<Method> {  // the thesis's AABB baseline: 5.2.1's 3/4 rule
          AabbOptions thesis = config.aabb;
          thesis.rebuild = AabbRebuildRule::Thesis;
-         return make_aabb_method(thesis);
+         return std::make_unique<NamedMethod>("aabb-thesis", make_aabb_method(thesis));
      }},
     {"hybrid", [](const PipelineConfig& config) { return decision::make_hybrid_method(config); }},
     {"adaptive", [](const PipelineConfig& config) { return decision::make_adaptive_method(config); }},
-    {"adaptive-thesis", [](const PipelineConfig& config) {
+    {"adaptive-thesis", [](const PipelineConfig& config) -> std::unique_ptr<Method> {
          PipelineConfig thesis = config;
          thesis.adaptive.policy = AdaptivePolicy::Thesis;
-         return decision::make_adaptive_method(thesis);
+         return std::make_unique<NamedMethod>("adaptive-thesis", decision::make_adaptive_method(thesis));
      }},
-    {"adaptive-cost", [](const PipelineConfig& config) {
+    {"adaptive-cost", [](const PipelineConfig& config) -> std::unique_ptr<Method> {
          PipelineConfig cost = config;
          cost.adaptive.policy = AdaptivePolicy::Cost;
-         return decision::make_adaptive_method(cost);
+         return std::make_unique<NamedMethod>("adaptive-cost", decision::make_adaptive_method(cost));
      }},
 };
 
