@@ -132,8 +132,6 @@ bool AabbCuller::rebuild_in_flight() const { return m_trees->rebuild_in_flight()
 
 bool AabbCuller::rebuild_finished() const { return m_trees->rebuild_finished(); }
 
-double AabbCuller::rebuild_average_ms() const { return m_trees->rebuild_average_ms(m_used); }
-
 std::unique_ptr<Method> make_aabb_method(AabbConfig config) {
     return std::make_unique<AabbMethod>(std::move(config));
 }

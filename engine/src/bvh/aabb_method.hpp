@@ -85,9 +85,6 @@ public:
     bool rebuild_in_flight() const;
     /// A worker rebuild finished and waits to be swapped in by the next cull().
     bool rebuild_finished() const;
-    /// AABB Rebuild Average (thesis Table 4.4): over the trees the last frame used, the sum of
-    /// each one's mean build time, ms; 0 before any build.
-    double rebuild_average_ms() const;
     /// The objects the last cull() used.
     const std::vector<std::uint32_t>& used() const { return m_used; }
     /// Milliseconds on the culler's clock (AabbConfig::clock_ms): the methods that share it

@@ -46,8 +46,6 @@ void ObjectTrees::swap_finished(const Frame& frame, bool wait, AabbFrameInfo& in
         slot.tree = std::move(rebuilt.tree);
         slot.topology = rebuilt.job.topology;
         slot.build_ms = rebuilt.stats.ms;
-        slot.build_ms_sum += rebuilt.stats.ms;
-        ++slot.builds;
         slot.quality = 1;
         ++info.background_swaps;
         if (m_config.on_tree) {
@@ -67,8 +65,6 @@ void ObjectTrees::build(const Frame& frame, std::span<const std::uint32_t> objec
             const BuildStats stats = build_tree(mesh.topology->triangles, mesh.vertices, m_config.build, slot.tree);
             slot.topology = mesh.topology;
             slot.build_ms = stats.ms;
-            slot.build_ms_sum += stats.ms;
-            ++slot.builds;
             slot.quality = 1;
             slot.fitted = slot.fresh = true;
         }
@@ -128,43 +124,35 @@ void ObjectTrees::apply_policy(const Frame& frame, std::span<const std::uint32_t
         info.rebuilt_objects += static_cast<std::uint32_t>(chosen.size());
     } else {
         if (m_background.busy()) return;  // one batch at a time; asked again next frame
-        std::vector<RebuildJob> jobs;
-        for (const std::uint32_t object : chosen) {
-            const ObjectFrame& mesh = frame.objects[object];
-            jobs.push_back({object, mesh.topology, mesh.vertices, frame.index, reason});
-            m_trees[object].pending = true;
-        }
-        m_background.start(std::move(jobs));
-        info.background_started += static_cast<std::uint32_t>(chosen.size());
+        hand_to_worker(frame, chosen, reason, info);
     }
     info.rebuild_reasons |= bit(reason);
 }
 
-bool ObjectTrees::start_rebuild(const Frame& frame, std::span<const std::uint32_t> objects, AabbFrameInfo& info) {
-    if (m_background.busy()) return false;
+void ObjectTrees::hand_to_worker(const Frame& frame, std::span<const std::uint32_t> objects, RebuildReason reason,
+                                 AabbFrameInfo& info) {
     std::vector<RebuildJob> jobs;
     for (const std::uint32_t object : objects) {
-        if (object >= frame.objects.size() || object >= m_trees.size() || m_trees[object].tree.empty()) continue;
         const ObjectFrame& mesh = frame.objects[object];
-        if (!same_topology(m_trees[object], mesh)) continue;  // the engine thread builds those
-        jobs.push_back({object, mesh.topology, mesh.vertices, frame.index, RebuildReason::Thesis});
+        jobs.push_back({object, mesh.topology, mesh.vertices, frame.index, reason});
         m_trees[object].pending = true;
     }
-    if (jobs.empty()) return false;
-    info.background_started += static_cast<std::uint32_t>(jobs.size());
-    info.rebuild_reasons |= bit(RebuildReason::Thesis);
     m_background.start(std::move(jobs));
-    return true;
+    info.background_started += static_cast<std::uint32_t>(objects.size());
 }
 
-double ObjectTrees::rebuild_average_ms(std::span<const std::uint32_t> objects) const {
-    double sum = 0;
+bool ObjectTrees::start_rebuild(const Frame& frame, std::span<const std::uint32_t> objects, AabbFrameInfo& info) {
+    if (m_background.busy()) return false;
+    std::vector<std::uint32_t> chosen;
     for (const std::uint32_t object : objects) {
-        if (object < m_trees.size() && m_trees[object].builds > 0) {
-            sum += m_trees[object].build_ms_sum / m_trees[object].builds;
-        }
+        if (object >= frame.objects.size() || object >= m_trees.size() || m_trees[object].tree.empty()) continue;
+        if (!same_topology(m_trees[object], frame.objects[object])) continue;  // the engine thread builds those
+        chosen.push_back(object);
     }
-    return sum;
+    if (chosen.empty()) return false;
+    hand_to_worker(frame, chosen, RebuildReason::Thesis, info);
+    info.rebuild_reasons |= bit(RebuildReason::Thesis);
+    return true;
 }
 
 std::vector<MeshView> ObjectTrees::views(const Frame& frame, std::span<const std::uint32_t> used) const {

@@ -20,8 +20,6 @@ struct ObjectTree {
     Tree tree;
     std::shared_ptr<const Topology> topology;  ///< the topology the tree was built for; null: none
     double build_ms = 0;    ///< wall time of its last build
-    double build_ms_sum = 0;  ///< wall time of all its builds (engine thread and worker)
-    std::uint32_t builds = 0; ///< how many
     double quality = 1;     ///< SAH cost / post-build cost after its last refit or build
     bool pending = false;   ///< a rebuild of it is in flight on the worker
     bool fitted = false;    ///< its boxes fit the current frame (built or refit this frame)
@@ -50,14 +48,15 @@ public:
     /// True while a worker batch runs or waits to be swapped in; finished: it waits.
     bool rebuild_in_flight() const { return m_background.busy(); }
     bool rebuild_finished() const { return m_background.ready(); }
-    /// Sum over `objects` of each tree's mean build time (the thesis's AABB Rebuild Average).
-    double rebuild_average_ms(std::span<const std::uint32_t> objects) const;
     /// The views the traversal reads (indexed by object; only `used` objects are set).
     std::vector<MeshView> views(const Frame& frame, std::span<const std::uint32_t> used) const;
     const ObjectTree& at(std::uint32_t object) const { return m_trees[object]; }
 
 private:
     void build(const Frame& frame, std::span<const std::uint32_t> objects);
+    /// Starts the worker on `objects` (none pending, worker idle), recording them in `info`.
+    void hand_to_worker(const Frame& frame, std::span<const std::uint32_t> objects, RebuildReason reason,
+                        AabbFrameInfo& info);
     void notify(TreeEventKind kind, std::uint32_t object, const ObjectFrame& mesh) const;
 
     const AabbConfig& m_config;

@@ -11,9 +11,7 @@
 #include "collidescope/error.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <future>
 #include <random>
 
 namespace collidescope::decision {
@@ -156,8 +154,7 @@ private:
     // Measures the GPU prior for the policy (without it, the GPU stays out).
     void calibrate() {
         try {
-            const std::atomic<bool> never{false};
-            m_policy->set_gpu_prior(measure_gpu_prior(m_gpu_config, never));
+            m_policy->set_gpu_prior(measure_gpu_prior(m_gpu_config));
         } catch (const std::exception&) {  // no GL after all: the GPU stays out
         }
     }

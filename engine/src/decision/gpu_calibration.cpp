@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 namespace collidescope::decision {
 namespace {
@@ -55,14 +54,11 @@ double time_frame(Method& method, std::uint32_t n, std::uint32_t index) {
 
 }  // namespace
 
-GpuCostPrior measure_gpu_prior(const GpuCullConfig& config, const std::atomic<bool>& stop) {
+GpuCostPrior measure_gpu_prior(const GpuCullConfig& config) {
     std::unique_ptr<Method> method = make_gpu_method(config);
     constexpr std::uint32_t k_small = 16, k_large = 48;  // 1,024 and 9,216 triangles in all
     std::uint32_t index = 0;
-    const auto frame_ms = [&](std::uint32_t n) {
-        if (stop) throw std::runtime_error("GPU calibration stopped");
-        return time_frame(*method, n, index++);
-    };
+    const auto frame_ms = [&](std::uint32_t n) { return time_frame(*method, n, index++); };
     frame_ms(k_small);  // warm up: shaders, buffers
     const double small = frame_ms(k_small);
     frame_ms(k_large);  // warm up: the larger buffers

@@ -1,5 +1,5 @@
 #pragma once
-// The cost policy's GPU prior (engine/src/decision, private): before the first frame, a
+// The cost policy's GPU prior (engine/src/decision, private): when the policy asks, a
 // throwaway GPU cull with the run's options culls two interpenetrating wavy sheets at two
 // sizes; a line through the two times gives the fixed and per-triangle cost. The thesis did
 // the same by hand (Table 4.3: query and triangle test times benchmarked beforehand).
@@ -8,12 +8,11 @@
 
 #include "collidescope/gpu_cull.hpp"
 
-#include <atomic>
 
 namespace collidescope::decision {
 
 /// Measures the prior (four GPU frames: a few hundred ms under llvmpipe). Throws
-/// UnavailableError without GL, and std::runtime_error when `stop` was set between frames.
-GpuCostPrior measure_gpu_prior(const GpuCullConfig& config, const std::atomic<bool>& stop);
+/// UnavailableError without GL.
+GpuCostPrior measure_gpu_prior(const GpuCullConfig& config);
 
 }  // namespace collidescope::decision

@@ -53,16 +53,6 @@ std::vector<PcsObject> initial_pcs(const FrameContext& context) {
     return pcs;
 }
 
-// Fractions of the remaining triangle-level PCS that each view removed (Algorithm 2's input).
-std::vector<double> culled_fractions(const GpuFrameInfo& info) {
-    std::vector<double> culled;
-    for (const GpuViewInfo& view : info.views) {
-        if (view.level != 1) continue;
-        culled.push_back(view.pcs_in == 0 ? 1.0 : 1.0 - static_cast<double>(view.pcs_out) / view.pcs_in);
-    }
-    return culled;
-}
-
 class GpuMethod final : public Method {
 public:
     explicit GpuMethod(const GpuCullConfig& config)
@@ -132,9 +122,7 @@ private:
         info.triangles_per_query = plan.variant == GpuCullVariant::Flags ? 0 : plan.triangles_per_query;
         if (m_config.naive) return;
         if (m_config.view_matrix) {
-            std::vector<double> fractions = culled_fractions(info);
-            fractions.resize(plan.views.size(), 1.0);  // views skipped because the PCS emptied
-            m_views.update(plan.views, fractions);
+            m_views.update(plan.views, gpucull::ViewConfiguration::culled_fractions(info, plan.views.size()));
             info.view_matrix = m_views.matrix();
         }
         if (m_config.adaptive_p && plan.variant == GpuCullVariant::Queries && triangle_queries > 0) {

@@ -50,4 +50,14 @@ void ViewConfiguration::update(const std::vector<int>& views, const std::vector<
     }
 }
 
+std::vector<double> ViewConfiguration::culled_fractions(const GpuFrameInfo& info, std::size_t passes) {
+    std::vector<double> culled;
+    for (const GpuViewInfo& view : info.views) {
+        if (view.level != 1) continue;
+        culled.push_back(view.pcs_in == 0 ? 1.0 : 1.0 - static_cast<double>(view.pcs_out) / view.pcs_in);
+    }
+    culled.resize(passes, 1.0);
+    return culled;
+}
+
 }  // namespace collidescope::gpucull

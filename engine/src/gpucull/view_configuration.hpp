@@ -20,6 +20,8 @@
 // best at pass 1 (tests/gpucull/test_mechanisms.cpp shows the case); raising row 1 to the later
 // passes' scores keeps the intent and the scale.
 
+#include "collidescope/gpu_cull.hpp"
+
 #include <array>
 #include <cstdint>
 #include <random>
@@ -44,6 +46,10 @@ public:
     /// Algorithm 2 after a frame: `culled[p]` is the fraction of the remaining PCS that pass p
     /// (which used views[p]) removed.
     void update(const std::vector<int>& views, const std::vector<double>& culled);
+
+    /// update()'s `culled` from a frame's trace: per triangle-level view, the fraction of the
+    /// remaining PCS it removed; passes the frame skipped (the PCS emptied) count as 1.
+    static std::vector<double> culled_fractions(const GpuFrameInfo& info, std::size_t passes);
 
     using Matrix = std::array<std::array<double, 3>, 3>;
     const Matrix& matrix() const { return m_matrix; }

@@ -107,12 +107,7 @@ private:
         if (gpu.queries > 0) gpu.query_ms = m_gpu_ms / static_cast<double>(gpu.queries);
         gpu.triangles_per_query = plan.variant == GpuCullVariant::Flags ? 0 : plan.triangles_per_query;
         if (m_config.view_matrix) {
-            std::vector<double> culled;
-            for (const GpuViewInfo& view : gpu.views) {
-                if (view.level == 1) culled.push_back(view.pcs_in == 0 ? 1.0 : 1.0 - double(view.pcs_out) / view.pcs_in);
-            }
-            culled.resize(plan.views.size(), 1.0);
-            m_views.update(plan.views, culled);
+            m_views.update(plan.views, gpucull::ViewConfiguration::culled_fractions(gpu, plan.views.size()));
             gpu.view_matrix = m_views.matrix();
         }
         stats.gpu = std::move(gpu);
