@@ -2,7 +2,7 @@
 // cheapest, and re-measure the others within a budget.
 //
 // - Estimates: AABB and hybrid, exponential moving averages of their measured times; the GPU,
-//   a per-triangle model (prior measured before the first frame, then scaled by the moving
+//   a per-triangle model (prior measured inside a frame once affordable, then scaled by the moving
 //   average of measured / predicted), so it follows the PCS size between measurements.
 // - Probing: a method not chosen is run once probe_budget x (ms elapsed since it last ran)
 //   reaches its predicted extra cost over the cheapest; so each method's probes cost at most
