@@ -8,6 +8,11 @@ namespace collidescope::app {
 
 void add_gpu_options(CLI::App& command, GpuOptions& options) {
     const std::string group = "GPU cull (methods gpu, ...)";
+    command.add_option("--gl", options.gl,
+                       "GL context of the GPU cull: auto (a GPU through EGL if any, else OSMesa), osmesa or egl")
+        ->check(CLI::IsMember({"auto", "osmesa", "egl"}))
+        ->capture_default_str()
+        ->group(group);
     command.add_option("--gpu-cull", options.cull,
                        "How a pass reads its answers: queries (an occlusion query per P triangles, "
                        "the thesis) or flags (one draw, per-triangle flags in a storage buffer)")
@@ -45,6 +50,7 @@ GpuCullConfig gpu_config(const GpuOptions& options) {
     config.sort_objects = !options.no_sort;
     config.adaptive_p = !options.fixed_p;
     config.object_level = !options.no_object_level;
+    config.gl = parse_gl_backend(options.gl);
     config.views.clear();
     for (const char axis : options.views) {
         const std::size_t index = std::string_view("xyz").find(axis);

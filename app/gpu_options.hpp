@@ -1,6 +1,6 @@
 #pragma once
 // The GPU cull's command-line options, shared by the subcommands that run the engine
-// (check, bench, record): --gpu-cull, --gpu-resolution, --gpu-views, --triangles-per-query and
+// (check, bench, record): --gl, --gpu-cull, --gpu-resolution, --gpu-views, --triangles-per-query and
 // the switches of the thesis's three mechanisms.
 
 #include "collidescope/gpu_cull.hpp"
@@ -22,6 +22,7 @@ struct GpuOptions {
     bool no_sort = false;      ///< --gpu-no-sort
     bool fixed_p = false;      ///< --gpu-fixed-p: --triangles-per-query stays
     bool no_object_level = false;
+    std::string gl = "auto";   ///< --gl: auto | osmesa | egl
 };
 
 /// Adds the options to `command`, writing into `options` (which must outlive parsing).

@@ -26,6 +26,7 @@ struct ReplayCliOptions {
     std::string camera = "auto";
     std::string show = "all";
     int threads = 0;
+    std::string gl = "auto";
     std::string contact_sheet;
     std::string sheet_frames = "every";
     int sheet_count = 12;
@@ -34,7 +35,7 @@ struct ReplayCliOptions {
 };
 
 constexpr const char* k_footer = R"(Writes DIR/frame_NNNN.png per recorded frame (NNNN = scene frame number), rendered offscreen
-(OSMesa, Mesa llvmpipe) in several threads: the meshes (one colour per object), colliding
+(OSMesa or EGL, see --gl) in several threads: the meshes (one colour per object), colliding
 triangles red, triangles left in the GPU cull's PCS amber and culled ones dimmed, the recorded
 depth buffers as thumbnails with a colour bar, a panel (frame, method and mode, the decision
 and its inputs, time per stage, pairs, PCS per pass, queries, triangles per query, the view
@@ -74,6 +75,7 @@ replays::ReplayOptions replay_options(const ReplayCliOptions& cli) {
     options.layers = replays::parse_layers(cli.show);
     if (cli.threads < 0) throw InputError("--threads must be 0 (all hardware threads) or more");
     options.threads = cli.threads;
+    options.gl = parse_gl_backend(cli.gl);
     options.contact_sheet = cli.contact_sheet;
     options.sheet_selection = replays::parse_sheet_selection(cli.sheet_frames);
     if (cli.sheet_count < 1) throw InputError("--sheet-count must be at least 1");
@@ -153,6 +155,10 @@ Command add_replay_command(CLI::App& app) {
         ->type_name("LIST")
         ->capture_default_str();
     replay->add_option("--threads", options->threads, "Render threads, each with its own GL context; 0 = all hardware threads")
+        ->capture_default_str();
+    replay->add_option("--gl", options->gl,
+                       "GL context: auto (a GPU through EGL if any, else OSMesa), osmesa or egl")
+        ->check(CLI::IsMember({"auto", "osmesa", "egl"}))
         ->capture_default_str();
     replay->add_option("--contact-sheet", options->contact_sheet, "Also write a grid of selected frames to this PNG")
         ->type_name("FILE.png");

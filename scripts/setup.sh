@@ -17,6 +17,8 @@ PACKAGES=(
   libhdf5-dev hdf5-tools
   # replays (offscreen GL, overlays, PNG)
   libosmesa6-dev libegl-dev libepoxy-dev libimgui-dev libstb-dev fonts-dejavu-core
+  # the EGL backend (--gl egl): Mesa's EGL vendor and its llvmpipe driver (no GPU needed)
+  libegl-mesa0 libgl1-mesa-dri
   # data: the Stanford bunny (/usr/share/glmark2/models/bunny.obj)
   glmark2-data
   # peers of the aabb method (bench/peers/bench_bvh_peers, built only when present)

@@ -79,7 +79,7 @@ std::vector<std::uint64_t> select_sheet_frames(SheetSelection selection, int cou
 }
 
 void write_contact_sheet(const std::filesystem::path& file, const std::vector<SheetTile>& tiles, const TileSize& tile,
-                         const SessionView& session, SheetSelection selection) {
+                         const SessionView& session, SheetSelection selection, GlBackend gl) {
     const int columns = std::max(1, std::min(k_columns, int(tiles.size())));
     const int rows = std::max(1, int((tiles.size() + std::size_t(columns) - 1) / std::size_t(columns)));
     const float font = std::clamp(float(tile.width) / 28.0f, 11.0f, 15.0f);
@@ -88,7 +88,7 @@ void write_contact_sheet(const std::filesystem::path& file, const std::vector<Sh
     const int header = int(font * 3.6f);
     const int width = columns * tile.width + (columns + 1) * gap;
     const int height = header + rows * (tile.height + caption + gap) + gap;
-    RenderThread thread = make_render_thread(width, height, font);
+    RenderThread thread = make_render_thread(gl, width, height, font);
     std::vector<std::unique_ptr<Texture>> textures;
     for (const SheetTile& one : tiles) textures.push_back(std::make_unique<Texture>(one.rgba, tile.width, tile.height));
     thread.renderer->clear();

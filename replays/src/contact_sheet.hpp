@@ -35,8 +35,8 @@ TileSize sheet_tile_size(int width, int height);
 std::vector<std::uint64_t> select_sheet_frames(SheetSelection selection, int count, const std::vector<double>& totals,
                                                const std::vector<std::uint64_t>& pairs);
 
-/// Renders the sheet in its own GL context and writes it as a PNG.
+/// Renders the sheet in its own GL context (of `gl`) and writes it as a PNG.
 void write_contact_sheet(const std::filesystem::path& file, const std::vector<SheetTile>& tiles, const TileSize& tile,
-                         const SessionView& session, SheetSelection selection);
+                         const SessionView& session, SheetSelection selection, GlBackend gl);
 
 }  // namespace collidescope::replays

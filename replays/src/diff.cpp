@@ -141,7 +141,7 @@ ReplaySummary replay_diff(const std::filesystem::path& a, const std::filesystem:
     std::mutex reader_lock;
     std::mutex done_lock;
     const auto start = std::chrono::steady_clock::now();
-    summary.renderer = run_parallel(options.threads, rows.size(), options.width, options.height,
+    summary.renderer = run_parallel(options.gl, options.threads, rows.size(), options.width, options.height,
                                     [&](RenderThread& thread, std::uint64_t i) {
         FrameData frame_a, frame_b;
         {

@@ -1,9 +1,5 @@
 #pragma once
-// OpenGL declarations for the replayer (replays/src, private). Like the engine's GPU cull, GL
-// entry points come from libOSMesa itself (GL_GLEXT_PROTOTYPES), not from a loader.
+// OpenGL for the replayer (replays/src, private): like the engine's GPU cull, the entry points
+// of the context current on this thread (collidescope/gl_api.hpp), never linked ones.
 
-#ifndef GL_GLEXT_PROTOTYPES
-#define GL_GLEXT_PROTOTYPES 1
-#endif
-#include <GL/gl.h>
-#include <GL/glext.h>
+#include "collidescope/gl_api.hpp"

@@ -13,10 +13,10 @@
 
 namespace collidescope::replays {
 
-RenderThread make_render_thread(int width, int height, float font_size) {
+RenderThread make_render_thread(GlBackend gl, int width, int height, float font_size) {
     RenderThread thread;
     try {
-        thread.context = gpucull::make_osmesa_context();
+        thread.context = gpucull::make_gl_context(gl);
     } catch (const UnavailableError& error) {
         throw UnavailableError(std::string("replay: no offscreen GL context (") + error.what() + ")");
     }
@@ -30,7 +30,7 @@ int render_threads(int threads, std::uint64_t count) {
     return int(std::clamp<std::uint64_t>(std::uint64_t(wanted), 1, std::max<std::uint64_t>(count, 1)));
 }
 
-std::string run_parallel(int threads, std::uint64_t count, int width, int height,
+std::string run_parallel(GlBackend gl, int threads, std::uint64_t count, int width, int height,
                          const std::function<void(RenderThread&, std::uint64_t)>& job) {
     std::atomic<std::uint64_t> next{0};
     std::atomic<bool> failed{false};
@@ -39,7 +39,7 @@ std::string run_parallel(int threads, std::uint64_t count, int width, int height
     std::string renderer;
     auto work = [&] {
         try {
-            RenderThread thread = make_render_thread(width, height);
+            RenderThread thread = make_render_thread(gl, width, height);
             {
                 const std::lock_guard<std::mutex> guard(error_lock);
                 renderer = thread.context->renderer();

@@ -1,6 +1,6 @@
 #pragma once
 // Parallel offscreen rendering (replays/src, private): several threads, each with its own GL
-// context (the engine's OSMesa context), framebuffer and ImGui overlay, taking frames in order
+// context (the engine's GL context interface: OSMesa or EGL), framebuffer and ImGui overlay, taking frames in order
 // from a shared counter.
 
 #include "mesh_renderer.hpp"
@@ -22,14 +22,14 @@ struct RenderThread {
     std::unique_ptr<Overlay> overlay;
 };
 
-/// Makes a GL context current on this thread with a width x height framebuffer and an overlay
+/// Makes a GL context of `gl` current on this thread with a width x height framebuffer and an overlay
 /// (its font `font_size` pixels; 0: from the height). Throws UnavailableError naming the reason.
-RenderThread make_render_thread(int width, int height, float font_size = 0);
+RenderThread make_render_thread(GlBackend gl, int width, int height, float font_size = 0);
 
 /// Runs job(thread, i) for i in [0, count) on `threads` threads (0 = hardware threads; never
 /// more than count). The first exception stops the others and is rethrown here. Returns the
 /// GL_RENDERER of the contexts.
-std::string run_parallel(int threads, std::uint64_t count, int width, int height,
+std::string run_parallel(GlBackend gl, int threads, std::uint64_t count, int width, int height,
                          const std::function<void(RenderThread&, std::uint64_t)>& job);
 
 /// The number of threads run_parallel uses for `threads` and `count`.

@@ -110,7 +110,7 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
     bool any_decision = false;
     std::uint64_t dropped = 0;
     const auto start = std::chrono::steady_clock::now();
-    summary.renderer = run_parallel(options.threads, rows.size(), options.width, options.height,
+    summary.renderer = run_parallel(options.gl, options.threads, rows.size(), options.width, options.height,
                                     [&](RenderThread& thread, std::uint64_t i) {
         StepClock clock;
         FrameData frame;
@@ -173,7 +173,7 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
     if (sheet) {
         std::vector<SheetTile> ordered;
         for (auto& [i, one] : tiles) ordered.push_back(std::move(one));
-        write_contact_sheet(options.contact_sheet, ordered, tile, session, options.sheet_selection);
+        write_contact_sheet(options.contact_sheet, ordered, tile, session, options.sheet_selection, options.gl);
         summary.contact_sheet = options.contact_sheet;
     }
     return summary;

@@ -1,6 +1,7 @@
 // Mode 2 on the command line: --method gpu's options, and what happens when no GL context can
-// be made (Mesa refuses an OpenGL 4.5 core context when told its GL version is 3.3): check
-// exits 2 with the reason, bench skips the GPU methods and says why.
+// be made (Mesa refuses an OpenGL 4.5 core context when told its GL version is 3.3; libglvnd
+// finds no EGL vendor when pointed at none): check exits 2 with the reason, bench skips the GPU
+// methods and says why.
 
 #include "app/cli_runner.hpp"
 #include "mesh/temp_files.hpp"
@@ -36,6 +37,9 @@ TEST(GpuCli, GpuMethodsMatchBruteWithTheirOptions) {
         {"--method", "gpu-naive"},
         {"--method", "gpu", "--gpu-cull", "flags", "--gpu-resolution", "16", "--gpu-views", "y"},
         {"--method", "gpu", "--gpu-fixed-views", "--gpu-no-sort", "--gpu-fixed-p", "--triangles-per-query", "3"},
+        {"--method", "gpu", "--gl", "egl"},
+        {"--method", "hybrid", "--gl", "egl"},
+        {"--method", "gpu", "--gl", "osmesa"},
     };
     for (const std::vector<std::string>& variant : variants) {
         std::vector<std::string> args = {"check", "--scene", "D:small", "--pairs", "gpu.tsv", "--exit-zero", "-q"};
@@ -60,6 +64,23 @@ TEST(GpuCli, NoContextMeansExit2WithTheReason) {
     EXPECT_EQ(result.exit_code, 2);
     EXPECT_NE(result.err.find("GPU cull unavailable"), std::string::npos) << result.err;
     EXPECT_EQ(result.err_lines().size(), 1u) << result.err;
+}
+
+// With no EGL vendor library, libglvnd offers no display: --gl egl cannot be had, and says so.
+TEST(GpuCli, NoEglMeansExit2WithTheReason) {
+    const ScopedEnv no_vendor("__EGL_VENDOR_LIBRARY_FILENAMES", "/nonexistent/egl_vendor.json");
+    TempDir dir;
+    const auto result = run_cli({"check", "--scene", "demo:small", "--method", "gpu", "--gl", "egl"}, dir.path());
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_NE(result.err.find("GPU cull unavailable: EGL"), std::string::npos) << result.err;
+    EXPECT_EQ(result.err_lines().size(), 1u) << result.err;
+}
+
+TEST(GpuCli, UnknownGlBackendIsAUsageError) {
+    TempDir dir;
+    const auto result = run_cli({"check", "--scene", "demo:small", "--method", "gpu", "--gl", "glx"}, dir.path());
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_NE(result.err.find("--gl"), std::string::npos) << result.err;
 }
 
 TEST(GpuCli, BenchSkipsUnavailableMethodsAndSaysWhy) {

@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <unistd.h>
 #include <set>
 
@@ -259,6 +260,35 @@ TEST_F(Replay, SameRecordingAndOptionsGiveTheSameBytesWhateverTheThreads) {
     EXPECT_EQ(testing::read_bytes(out / "1" / "sheet.png"), testing::read_bytes(out / "3" / "sheet.png"));
     // Orbiting: the first and the last frame differ in where the meshes are.
     EXPECT_NE(testing::read_bytes(out / "1" / frame_name(0)), testing::read_bytes(out / "1" / frame_name(7)));
+}
+
+// --gl egl renders through EGL (the GPU path on a machine with one). Under Mesa both backends
+// run llvmpipe, so the images must be the very bytes OSMesa gives.
+TEST_F(Replay, EglGivesTheOsmesaImagesUnderTheSameRenderer) {
+    const std::filesystem::path out = testing::test_dir("gl_backends");
+    std::map<std::string, std::string> rate_lines;
+    for (const char* gl : {"osmesa", "egl"}) {
+        const testing::CliResult result =
+            run_cli({"replay", (s_dir / "gpu.h5").string(), "-o", (out / gl).string(), "--size", "320x200",
+                     "--frames", "0:4", "--gl", gl, "--contact-sheet", (out / gl).string() + "/sheet.png"},
+                    out);
+        ASSERT_EQ(result.exit_code, 0) << result.err;
+        rate_lines[gl] = result.err;
+    }
+    EXPECT_NE(rate_lines["osmesa"].find("via OSMesa"), std::string::npos) << rate_lines["osmesa"];
+    EXPECT_NE(rate_lines["egl"].find("via EGL"), std::string::npos) << rate_lines["egl"];
+    const bool same_renderer = rate_lines["egl"].find("llvmpipe") != std::string::npos;
+    for (std::uint32_t frame = 0; frame < 4; ++frame) {
+        const Image image = read_png(out / "egl" / frame_name(frame));
+        EXPECT_EQ(image.width, 320) << frame;
+        if (same_renderer) {
+            EXPECT_EQ(testing::read_bytes(out / "egl" / frame_name(frame)),
+                      testing::read_bytes(out / "osmesa" / frame_name(frame))) << frame;
+        }
+    }
+    if (same_renderer) {
+        EXPECT_EQ(testing::read_bytes(out / "egl" / "sheet.png"), testing::read_bytes(out / "osmesa" / "sheet.png"));
+    }
 }
 
 TEST_F(Replay, ContactSheetShowsTheSelectedFrames) {

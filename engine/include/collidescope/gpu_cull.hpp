@@ -2,6 +2,8 @@
 /// Options and per-frame trace of Mode 2, the GPU image-space cull (engine/src/gpucull;
 /// thesis 3.2, 4.2; docs/gpu_cull.md).
 
+#include "collidescope/gl_backend.hpp"
+
 #include <array>
 #include <cstdint>
 #include <string>
@@ -39,6 +41,9 @@ struct GpuCullConfig {
     /// Capture the depth buffers (GpuFrameInfo::depth_images) on frames whose index is a
     /// multiple of this; 0: never (the default; a capture costs a read back per view).
     std::uint32_t depth_every = 0;
+    /// The GL context's implementation (`--gl`): auto picks a GPU through EGL when there is
+    /// one, else OSMesa.
+    GlBackend gl = GlBackend::Auto;
 };
 
 /// One depth buffer of the cull, read back after the forward pass of a view at the triangle

@@ -43,6 +43,7 @@ CullRenderer::CullRenderer() : m_occluder(make_occluder_program()), m_tester(mak
 }
 
 CullRenderer::~CullRenderer() {
+    if (current_gl_api() == nullptr) return;  // no context current: its destruction frees these
     if (!m_query_pool.empty()) glDeleteQueries(static_cast<GLsizei>(m_query_pool.size()), m_query_pool.data());
     glDeleteFramebuffers(1, &m_test_fbo);
     glDeleteFramebuffers(1, &m_depth_fbo);

@@ -1,9 +1,5 @@
 #pragma once
-// OpenGL declarations for the GPU cull (engine/src/gpucull, private). GL entry points come from
-// libOSMesa itself (GL_GLEXT_PROTOTYPES): libepoxy does not resolve them under OSMesa.
+// OpenGL for the GPU cull (engine/src/gpucull, private): GL's types and constants, and the
+// entry points of the context current on this thread (collidescope/gl_api.hpp).
 
-#ifndef GL_GLEXT_PROTOTYPES
-#define GL_GLEXT_PROTOTYPES 1
-#endif
-#include <GL/gl.h>
-#include <GL/glext.h>
+#include "collidescope/gl_api.hpp"

@@ -1,5 +1,6 @@
 // The OSMesa context: an OpenGL 4.5 core profile over a tiny RGBA buffer (the cull renders into
-// its own framebuffer objects; the window-system buffer only has to exist).
+// its own framebuffer objects; the window-system buffer only has to exist). Entry points come
+// from OSMesaGetProcAddress.
 
 #include "gpucull/gl.hpp"
 #include "gpucull/gl_context.hpp"
@@ -9,7 +10,6 @@
 #include <GL/osmesa.h>
 
 #include <array>
-#include <vector>
 
 namespace collidescope::gpucull {
 namespace {
@@ -21,28 +21,38 @@ public:
                                   OSMESA_PROFILE, OSMESA_CORE_PROFILE,
                                   OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
         m_context = OSMesaCreateContextAttribs(attributes, nullptr);
-        if (m_context == nullptr) {
-            throw UnavailableError("GPU cull unavailable: OSMesa could not create an OpenGL 4.5 core context");
+        if (m_context == nullptr) throw UnavailableError("OSMesa: could not create an OpenGL 4.5 core context");
+        try {
+            m_api = load_gl_api(OSMesaGetProcAddress, "OSMesa");
+            make_current();
+        } catch (...) {
+            OSMesaDestroyContext(m_context);
+            throw;
         }
-        make_current();
         const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-        m_renderer = renderer != nullptr ? renderer : "unknown";
+        m_renderer = std::string(renderer != nullptr ? renderer : "unknown") + " via OSMesa";
     }
-    ~OsmesaContext() override { OSMesaDestroyContext(m_context); }
+    ~OsmesaContext() override {
+        if (current_gl_api() == &m_api) current_gl_api() = nullptr;
+        OSMesaDestroyContext(m_context);
+    }
     OsmesaContext(const OsmesaContext&) = delete;
     OsmesaContext& operator=(const OsmesaContext&) = delete;
 
     void make_current() override {
         if (OSMesaMakeCurrent(m_context, m_buffer.data(), GL_UNSIGNED_BYTE, k_size, k_size) == 0) {
-            throw UnavailableError("GPU cull unavailable: OSMesaMakeCurrent failed");
+            throw UnavailableError("OSMesa: OSMesaMakeCurrent failed");
         }
+        current_gl_api() = &m_api;
     }
     std::string renderer() const override { return m_renderer; }
+    GlBackend backend() const override { return GlBackend::Osmesa; }
 
 private:
     static constexpr int k_size = 4;
     OSMesaContext m_context = nullptr;
     std::array<unsigned char, 4 * k_size * k_size> m_buffer{};
+    GlApi m_api;
     std::string m_renderer;
 };
 

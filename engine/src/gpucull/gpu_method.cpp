@@ -60,7 +60,12 @@ public:
           m_views({config.view_decay_rate, true, config.seed}),
           m_per_query({config.naive ? 1 : config.triangles_per_query, config.max_triangles_per_query}),
           m_random(config.seed),
-          m_context(gpucull::make_osmesa_context()) {}
+          m_context(gpucull::make_cull_context(config.gl)) {}
+
+    // The renderer deletes its GL objects in the current context: make it ours first.
+    ~GpuMethod() override { gpucull::make_current_for_cleanup(*m_context); }
+    GpuMethod(const GpuMethod&) = delete;
+    GpuMethod& operator=(const GpuMethod&) = delete;
 
     std::string_view name() const override { return m_config.naive ? "gpu-naive" : "gpu"; }
 

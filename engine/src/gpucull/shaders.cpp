@@ -130,7 +130,7 @@ Program::Program(const char* vertex, const char* geometry, const char* fragment)
 }
 
 Program::~Program() {
-    if (m_id != 0) glDeleteProgram(m_id);
+    if (m_id != 0 && current_gl_api() != nullptr) glDeleteProgram(m_id);  // else freed with the context
 }
 
 Program& Program::operator=(Program&& other) noexcept {

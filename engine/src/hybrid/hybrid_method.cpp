@@ -42,7 +42,12 @@ public:
         : m_culler(std::move(culler)),
           m_config(gpu),
           m_views({gpu.view_decay_rate, true, gpu.seed}),
-          m_context(gpucull::make_osmesa_context()) {}
+          m_context(gpucull::make_cull_context(gpu.gl)) {}
+
+    // The renderer deletes its GL objects in the current context: make it ours first.
+    ~HybridMethod() override { gpucull::make_current_for_cleanup(*m_context); }
+    HybridMethod(const HybridMethod&) = delete;
+    HybridMethod& operator=(const HybridMethod&) = delete;
 
     std::string_view name() const override { return "hybrid"; }
 

@@ -1,6 +1,8 @@
 #pragma once
 /// Options of the replayer (docs/replay.md): what a frame shows, the camera, the image size.
 
+#include "collidescope/gl_backend.hpp"
+
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -67,6 +69,8 @@ struct ReplayOptions {
     unsigned layers = k_layer_all;  ///< Layer bits
     /// Render threads, each with its own GL context; 0 = one per hardware thread.
     int threads = 0;
+    /// The GL contexts' implementation (`--gl`), as for the GPU cull.
+    GlBackend gl = GlBackend::Auto;
     std::filesystem::path contact_sheet;  ///< "" = none
     SheetSelection sheet_selection = SheetSelection::Every;
     int sheet_count = 12;  ///< frames on the contact sheet, at most

@@ -1,0 +1,75 @@
+// Choosing the GL context's implementation at run time (--gl auto|osmesa|egl).
+
+#include "gpucull/gl_context.hpp"
+
+#include "collidescope/error.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace collidescope {
+
+std::string_view gl_backend_name(GlBackend backend) {
+    switch (backend) {
+    case GlBackend::Auto: return "auto";
+    case GlBackend::Osmesa: return "osmesa";
+    case GlBackend::Egl: return "egl";
+    }
+    return "auto";
+}
+
+GlBackend parse_gl_backend(std::string_view name) {
+    for (const GlBackend backend : {GlBackend::Auto, GlBackend::Osmesa, GlBackend::Egl}) {
+        if (name == gl_backend_name(backend)) return backend;
+    }
+    throw std::invalid_argument("unknown GL backend '" + std::string(name) + "': expected auto, osmesa or egl");
+}
+
+namespace gpucull {
+
+std::unique_ptr<GlContext> make_gl_context(GlBackend backend) {
+    if (backend == GlBackend::Osmesa) return make_osmesa_context();
+    if (backend == GlBackend::Egl) return make_egl_context();
+    // Auto: a GPU through EGL when there is one; otherwise OSMesa, which always worked here
+    // and is the reference; EGL's software renderer when OSMesa is gone (Mesa >= 25.1).
+    std::string reasons;
+    if (egl_hardware_device_present()) {
+        try {
+            return make_egl_context();
+        } catch (const UnavailableError& error) {
+            reasons = std::string(error.what()) + "; ";
+        }
+    }
+    try {
+        return make_osmesa_context();
+    } catch (const UnavailableError& error) {
+        reasons += std::string(error.what()) + "; ";
+    }
+    try {
+        return make_egl_context();
+    } catch (const UnavailableError& error) {
+        reasons += error.what();
+    }
+    throw UnavailableError(reasons);
+}
+
+void make_current_for_cleanup(GlContext& context) noexcept {
+    try {
+        context.make_current();
+    } catch (const UnavailableError&) {
+        // Nothing to do: deleting in another context would be wrong; the context frees its
+        // objects when it is destroyed, right after.
+        current_gl_api() = nullptr;
+    }
+}
+
+std::unique_ptr<GlContext> make_cull_context(GlBackend backend) {
+    try {
+        return make_gl_context(backend);
+    } catch (const UnavailableError& error) {
+        throw UnavailableError(std::string("GPU cull unavailable: ") + error.what());
+    }
+}
+
+}  // namespace gpucull
+}  // namespace collidescope
