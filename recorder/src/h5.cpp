@@ -5,13 +5,16 @@
 #include "collidescope/error.hpp"
 #include "collidescope/recorder/schema.hpp"
 
-#include <mutex>
 
 namespace collidescope::recorder::h5 {
 
 void silence() {
-    static std::once_flag once;
-    std::call_once(once, [] { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); });
+    // Per thread: a thread-safe HDF5 (Debian's is) keeps the error stack, and whether it
+    // prints, per thread; the recorder's writer thread printed HDF5-DIAG pages on a full disk.
+    thread_local bool silenced = false;
+    if (silenced) return;
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    silenced = true;
 }
 
 Id& Id::operator=(Id&& other) noexcept {

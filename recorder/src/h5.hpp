@@ -12,7 +12,7 @@
 
 namespace collidescope::recorder::h5 {
 
-/// Turns off HDF5's automatic error stack printing (process-wide, idempotent).
+/// Turns off HDF5's automatic error stack printing for the calling thread (idempotent).
 void silence();
 
 /// Owns one hid_t and closes it with the matching H5*close.
