@@ -34,7 +34,11 @@ void Recording::Impl::open_file() {
     where.check(H5Pset_metadata_read_attempts(fapl.get(), k_swmr_read_attempts), "cannot set read attempts");
     hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, fapl.get());
     if (id < 0) id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-    file = where.own(id, H5Fclose, "cannot open the HDF5 file (corrupt or truncated?)");
+    if (id < 0) {
+        const std::string detail = h5::error_detail();
+        where.fail("cannot open the HDF5 file (corrupt or truncated?)" + (detail.empty() ? "" : ": " + detail));
+    }
+    file = h5::Id(id, H5Fclose);
 }
 
 void Recording::Impl::check_schema() {

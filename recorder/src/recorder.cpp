@@ -31,7 +31,11 @@ std::vector<float> to_float(const std::vector<Vec3>& vertices) {
 
 // "run.h5: frame 37: cannot reserve ... (No space left on device); the 37 frames before it
 // are intact and the file is left unfinished (partial)".
-std::string write_error_line(const std::string& what, std::uint64_t intact) {
+std::string write_error_line(const std::string& what, std::uint64_t intact, bool damaged) {
+    if (damaged) {
+        return what + "; the write failed inside the frame, so the file may not open (the " + std::to_string(intact) +
+               " frames before it were flushed)";
+    }
     return what + "; the " + std::to_string(intact) + " frames before it are intact and the file is left unfinished (partial)";
 }
 
@@ -94,7 +98,7 @@ void Recorder::State::write_loop() {
         }
     } catch (const std::exception& failure) {
         std::lock_guard lock(error_mutex);
-        error = std::make_exception_ptr(InputError(write_error_line(failure.what(), summary.frames)));
+        error = std::make_exception_ptr(InputError(write_error_line(failure.what(), summary.frames, file.damaged())));
         queue.close(true);  // the engine's next push returns false and sees the error
     }
 }

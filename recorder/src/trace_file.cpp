@@ -168,6 +168,7 @@ void TraceFile::append(const FrameRecord& record, Keep keep) {
     try {
         write_frame(record, keep);
     } catch (const InputError& error) {
+        m_damaged = true;
         // HDF5 reports a failed write without its reason; errno still holds the system's.
         const int system_error = errno;
         std::string line = m_where.file() + ": " + frame + ": " + std::string(error.what()).substr(m_where.file().size() + 2);

@@ -33,6 +33,9 @@ public:
     /// depth images only as `keep` says), the frame index last, and flushes the file. Throws
     /// InputError naming the file, the frame and, for a failed write, the system's reason.
     void append(const FrameRecord& record, Keep keep);
+    /// True once a write failed inside a frame (after its space was reserved: should not
+    /// happen): HDF5 may have written part of it, and the file may not open.
+    bool damaged() const { return m_damaged; }
     /// Current size of the file in bytes.
     std::uint64_t file_bytes() const;
     /// Bytes the positions datasets occupy (all objects).
@@ -92,6 +95,7 @@ private:
     std::vector<ObjectColumns> m_objects;
     std::unique_ptr<SpaceReserve> m_reserve;  ///< opened once SWMR writing started
     int m_deflate;
+    bool m_damaged = false;
     hsize_t m_depth_chunk;  ///< pixels per chunk of /gpu/depth/pixels: one image
 };
 
