@@ -13,7 +13,10 @@
 #include <gtest/gtest.h>
 
 #include <signal.h>
+#include <sys/mount.h>
 
+#include <cerrno>
+#include <cstring>
 #include <regex>
 
 namespace collidescope {
@@ -129,6 +132,36 @@ TEST_F(RecordInterrupt, WriteLimitNamesTheFileAndFrameAndKeepsTheFramesBefore) {
     EXPECT_EQ(testing::run_cli({"validate", "--allow-incomplete", file.string()}, m_dir.path()).exit_code, 0);
     const CliResult inspect = testing::run_cli({"inspect", file.string()}, m_dir.path());
     EXPECT_NE(inspect.out.find("PARTIAL: not finished"), std::string::npos) << inspect.out;
+}
+
+// A real full disk: a 4 MiB tmpfs (needs the right to mount: root; skipped otherwise). The
+// recording stops with ENOSPC naming file and frame; the frames before read back intact.
+TEST_F(RecordInterrupt, FullTmpfsStopsWithTheFramesBeforeIntact) {
+    const fs::path mount_point = m_dir / "tmpfs";
+    fs::create_directories(mount_point);
+    if (mount("tmpfs", mount_point.c_str(), "tmpfs", 0, "size=4m") != 0) {
+        GTEST_SKIP() << "cannot mount a tmpfs here (" << std::strerror(errno) << "); the write-limit test covers it";
+    }
+    struct Unmount {
+        fs::path path;
+        ~Unmount() { umount2(path.c_str(), MNT_DETACH); }
+    } unmount{mount_point};
+    const fs::path file = mount_point / "full.h5";
+    std::vector<std::string> run_args = args(file.string());
+    run_args.push_back("-q");
+    const CliResult result = testing::run_cli(run_args, m_dir.path());
+    EXPECT_EQ(result.exit_code, 2) << result.err;
+    std::smatch match;
+    const std::regex line("^collidescope: error: " + file.string() +
+                          ": frame ([0-9]+): [^\n]*\\(No space left on device\\); the ([0-9]+) frames before it are "
+                          "intact and the file is left unfinished \\(partial\\)\n$");
+    ASSERT_TRUE(std::regex_search(result.err, match, line)) << result.err;
+    const std::uint64_t intact = std::stoull(match[2]);
+    EXPECT_GT(intact, 0u);
+    const recorder::Recording full(file);
+    EXPECT_FALSE(full.finished());
+    EXPECT_EQ(full.frames_complete(), intact);
+    expect_prefix_of_whole(full);
 }
 
 }  // namespace
