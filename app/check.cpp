@@ -5,6 +5,7 @@
 #include "commands.hpp"
 #include "engine_options.hpp"
 #include "frame_range.hpp"
+#include "interrupt.hpp"
 #include "output_stream.hpp"
 #include "progress.hpp"
 #include "scene_input.hpp"
@@ -13,6 +14,7 @@
 #include "collidescope/pipeline.hpp"
 #include "collidescope/scene.hpp"
 
+#include <initializer_list>
 #include <memory>
 #include <optional>
 
@@ -38,7 +40,12 @@ Outputs (FILE may be - for stdout; logs and progress always go to stderr):
            numbered from 0 in input order, triangles from 0 in file order, each pair once
            with (objA,triA) < (objB,triB), lines sorted numerically.
   --stats  JSON Lines, one object per frame: {"frame", "method", "ms": {...}, "counts": {...}}.
-Exit codes: 0 no collisions, 1 collisions found, 2 error (bad input or usage).)";
+  A file output is written as FILE.partial, flushed after every frame, and renamed to FILE
+  when the run completes: an interrupted run leaves only FILE.partial.
+SIGINT or SIGTERM stops after the current frame (a second one at once) and says how many
+frames were written.
+Exit codes: 0 no collisions, 1 collisions found, 2 error (bad input or usage),
+  130 stopped by SIGINT, 143 stopped by SIGTERM.)";
 
 std::string scene_line(const Scene& scene, const FrameRange& range, const PipelineConfig& config) {
     std::string line = "scene '" + scene.name + "'";
@@ -47,6 +54,20 @@ std::string scene_line(const Scene& scene, const FrameRange& range, const Pipeli
             std::to_string(range.begin) + ".." + std::to_string(range.end - 1) + " of " +
             std::to_string(scene.source->frame_count()) + ", method " + config.method +
             ", self-collision " + (config.self_collision ? "on" : "off");
+    return line;
+}
+
+// "interrupted by SIGINT after 12 of 60 frames (frames 0..11); partial outputs: pairs.tsv.partial".
+std::string interrupted_line(int signal, const FrameRange& range, std::uint32_t end,
+                             std::initializer_list<const OutputStream*> outputs) {
+    std::string line = "interrupted by " + signal_name(signal) + " after " + std::to_string(end - range.begin) + " of " +
+                       std::to_string(range.end - range.begin) + " frames (frames " + std::to_string(range.begin) +
+                       ".." + std::to_string(end - 1) + ")";
+    std::string files;
+    for (const OutputStream* output : outputs) {
+        if (output != nullptr) files += (files.empty() ? "" : ", ") + output->location();
+    }
+    if (!files.empty()) line += "; partial output: " + files;
     return line;
 }
 
@@ -73,13 +94,26 @@ int run_check(const CheckOptions& options) {
     // static mesh gives one line on stderr: the error.
     Frame frame = scene.source->frame(range.begin);
     if (!options.quiet) progress.log(scene_line(scene, range, config));
-    for (std::uint32_t f = range.begin;;) {
+    const InterruptGuard interrupt;
+    std::uint32_t f = range.begin;
+    for (;;) {
         pipeline.process(frame);
+        // Every finished frame reaches the disk: a killed run keeps it in the .partial file.
+        if (pairs_out) pairs_out->end_frame(f);
+        if (stats_out) stats_out->end_frame(f);
         progress.advance();
-        if (++f == range.end) break;
+        if (++f == range.end || interrupt.signal() != 0) break;
         frame = scene.source->frame(f);
     }
     progress.finish();
+    if (interrupt.signal() != 0) {
+        if (pairs_out) pairs_out->finish_partial();
+        if (stats_out) stats_out->finish_partial();
+        progress.log(summary.total_line());
+        progress.log(interrupted_line(interrupt.signal(), range, f, {pairs_out ? &*pairs_out : nullptr,
+                                                                    stats_out ? &*stats_out : nullptr}));
+        return interrupted_exit_code(interrupt.signal());
+    }
     if (pairs_out) pairs_out->finish();
     if (stats_out) stats_out->finish();
     progress.log(summary.total_line());

@@ -84,6 +84,9 @@ nlohmann::ordered_json gather(const recorder::Recording& rec) {
     out["file"] = rec.path();
     out["schema_version"] = std::to_string(rec.version_major()) + "." + std::to_string(rec.version_minor());
     out["finished"] = rec.finished();
+    out["interrupted"] = rec.interrupted();
+    out["partial"] = !rec.partial_reason().empty();
+    out["partial_reason"] = rec.partial_reason();
     out["frames"] = rec.frames_complete();
     nlohmann::ordered_json metadata = nlohmann::ordered_json::object();
     for (const auto& [name, value] : rec.metadata()) metadata[name] = value;
@@ -148,7 +151,8 @@ void print_text(const nlohmann::ordered_json& info) {
     const auto& meta = info["metadata"];
     const auto text = [&](const char* key) { return meta.contains(key) ? meta[key].get<std::string>() : std::string(); };
     std::cout << info["file"].get<std::string>() << ": collidescope recording, schema " << info["schema_version"].get<std::string>()
-              << ", " << (info["finished"].get<bool>() ? "finished" : "NOT finished (interrupted)") << ", "
+              << ", " << (info["partial"].get<bool>() ? "PARTIAL: " + info["partial_reason"].get<std::string>() : "complete")
+              << ", "
               << info["frames"] << " frames complete (scene frames " << info["first_frame"] << ".." << info["last_frame"] << ")\n";
     std::cout << "scene '" << text("scene") << "' preset '" << text("scene_preset") << "' seed " << text("scene_seed")
               << ", method " << text("method") << ", self-collision " << (text("self_collision") == "1" ? "on" : "off")

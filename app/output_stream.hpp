@@ -1,27 +1,53 @@
 #pragma once
-// Where a data output goes: a file, or stdout for `-`.
+// Where a data output goes: a file, or stdout for `-`. A file is written under a `.partial`
+// name, flushed after every frame, and takes its own name only when the run completes: a run
+// that is interrupted (a signal, a kill, a full disk) never leaves a truncated file that looks
+// complete, and keeps every frame it finished in the `.partial` file.
 
-#include <fstream>
+#include <cstdint>
+#include <memory>
 #include <ostream>
 #include <string>
 
 namespace collidescope::app {
 
-/// An output named on the command line: `-` is stdout, anything else a file (truncated).
+/// An output named on the command line: `-` is stdout, anything else a file.
 class OutputStream {
 public:
-    /// Opens `target`. Throws InputError naming it when the file cannot be created.
+    /// Opens `target` (a file: removes an existing `target`, creates `target.partial`). Throws
+    /// InputError naming it when the file cannot be created.
     explicit OutputStream(const std::string& target);
+    ~OutputStream();
+    OutputStream(const OutputStream&) = delete;
+    OutputStream& operator=(const OutputStream&) = delete;
 
-    std::ostream& stream() { return m_to_stdout ? *m_stdout : m_file; }
-    /// Flushes; throws std::runtime_error naming the target when anything failed to write.
+    std::ostream& stream() { return *m_stream; }
+    /// Flushes what frame `frame` wrote; throws InputError naming the file, the frame and the
+    /// system's reason when it could not be written (disk full, file size limit), after
+    /// cutting the file back to the frames before it.
+    void end_frame(std::uint32_t frame);
+    /// Flushes and closes; a file takes its name (the rename is atomic). Throws InputError
+    /// naming the file when anything failed to write.
     void finish();
+    /// Flushes and closes an interrupted run's output, keeping the `.partial` name.
+    void finish_partial();
+    /// Where the data is: "stdout", the `.partial` file, or (after finish) the file.
+    std::string location() const;
+
+    /// The name a file output has until the run completes.
+    static std::string partial_name(const std::string& target) { return target + ".partial"; }
 
 private:
+    class FileBuffer;
+    void flush_or_throw(const std::string& what);
+
     std::string m_target;
     bool m_to_stdout;
-    std::ostream* m_stdout = nullptr;
-    std::ofstream m_file;
+    bool m_renamed = false;
+    std::uint64_t m_good_bytes = 0;  ///< file size after the last frame written whole
+    std::unique_ptr<FileBuffer> m_buffer;
+    std::unique_ptr<std::ostream> m_file_stream;
+    std::ostream* m_stream = nullptr;
 };
 
 }  // namespace collidescope::app

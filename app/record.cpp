@@ -4,6 +4,7 @@
 #include "commands.hpp"
 #include "engine_options.hpp"
 #include "frame_range.hpp"
+#include "interrupt.hpp"
 #include "progress.hpp"
 #include "scene_input.hpp"
 #include "size_option.hpp"
@@ -43,7 +44,11 @@ triangles and the decision system's inputs are recorded on every frame.
 --budget SIZE (e.g. 50M, 2G; K/M/G are powers of 1024) keeps the file near SIZE by dropping
 the depth buffers of more and more frames first, then the vertex positions; the summary says
 what was dropped.
-Exit codes: 0 recorded (whatever collided), 2 error.)";
+SIGINT or SIGTERM stops after the current frame (a second one at once): the frames so far are
+written, the file is marked partial (attribute `interrupted`) and the run says how many.
+A write error (disk full) stops the run with one line naming the file and the frame; the
+frames before it stay readable and the file is left unfinished (partial).
+Exit codes: 0 recorded (whatever collided), 2 error, 130 stopped by SIGINT, 143 by SIGTERM.)";
 
 // --depth: "off" (0) or "every:N" with N >= 1 (N).
 std::uint32_t parse_depth(const std::string& depth) {
@@ -131,16 +136,24 @@ int run_record(const RecordOptions& options) {
                      " objects, frames " + std::to_string(range.begin) + ".." + std::to_string(range.end - 1) +
                      ", method " + config.method + " -> " + options.output);
     }
-    for (std::uint32_t f = range.begin;;) {
+    const InterruptGuard interrupt;
+    std::uint32_t f = range.begin;
+    for (;;) {
         pipeline.process(frame);
         progress.advance();
-        if (++f == range.end) break;
+        if (++f == range.end || interrupt.signal() != 0) break;
         frame = scene.source->frame(f);
     }
-    const recorder::RecordSummary summary = recorder.finish();
+    const int signal = interrupt.signal();
+    const recorder::RecordSummary summary = recorder.finish(signal != 0 ? signal_name(signal) : std::string());
     progress.finish();
     progress.log(summary_line(summary, options.output, budget));
-    return 0;
+    if (signal == 0) return 0;
+    progress.log("interrupted by " + signal_name(signal) + " after " + std::to_string(summary.frames) + " of " +
+                 std::to_string(range.end - range.begin) + " frames (frames " + std::to_string(range.begin) + ".." +
+                 std::to_string(f - 1) + "); " + options.output + " is marked partial (attribute interrupted = " +
+                 signal_name(signal) + ")");
+    return interrupted_exit_code(signal);
 }
 
 }  // namespace

@@ -23,15 +23,17 @@ int run_validate(const ValidateOptions& options) {
     for (const std::string& line : report.problems) std::cerr << options.file << ": " << line << '\n';
     if (report.problems_omitted > 0) std::cerr << options.file << ": ... and " << report.problems_omitted << " more\n";
     bool ok = report.problems.empty();
-    if (!report.finished && !options.allow_incomplete) {
-        std::cerr << options.file << ": not finished (the recording was interrupted); " << report.frames_complete
+    // Killed, stopped by a signal or cut short by a write error: partial, whatever its frames hold.
+    const std::string partial = recording.partial_reason();
+    if (!partial.empty() && !options.allow_incomplete) {
+        std::cerr << options.file << ": partial: " << partial << "; " << report.frames_complete
                   << " frames complete (--allow-incomplete accepts it)\n";
         ok = false;
     }
     if (!options.quiet) {
         std::cerr << options.file << ": " << (ok ? "valid" : "INVALID") << ", schema " << recording.version_major() << "."
                   << recording.version_minor() << ", " << report.frames_complete << " frames complete"
-                  << (report.finished ? "" : " (interrupted)") << '\n';
+                  << (partial.empty() ? "" : " (partial)") << '\n';
     }
     return ok ? 0 : 1;
 }
@@ -49,7 +51,8 @@ Command add_validate_command(CLI::App& app) {
         "Checks: schema version, a unit on every dataset, per-frame datasets of equal length, monotone frame numbers,\n"
         "offsets starting at 0, non-decreasing and in range, pairs canonical, sorted and naming existing triangles,\n"
         "counts (colliding_pairs, triangles) matching the arrays, positions of the topology in force, known methods,\n"
-        "finite non-negative times, and that the writer finished.\n"
+        "finite non-negative times, and that the recording is complete: the writer finished and no signal stopped it\n"
+        "early (a partial recording is invalid unless --allow-incomplete).\n"
         "Exit codes: 0 valid, 1 invalid (problems on stderr), 2 error (not a recording, unreadable, newer schema).");
     return {validate, [options] { return run_validate(*options); }};
 }

@@ -5,13 +5,41 @@
 #include "collidescope/error.hpp"
 #include "collidescope/recorder/schema.hpp"
 
-#include <mutex>
 
 namespace collidescope::recorder::h5 {
 
 void silence() {
-    static std::once_flag once;
-    std::call_once(once, [] { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); });
+    // Per thread: a thread-safe HDF5 (Debian's is) keeps the error stack, and whether it
+    // prints, per thread; the recorder's writer thread printed HDF5-DIAG pages on a full disk.
+    thread_local bool silenced = false;
+    if (silenced) return;
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    silenced = true;
+}
+
+namespace {
+
+// HDF5 1.10.8 crashes in its atexit handler (H5F__close_cb, from H5_term_library) once closing
+// a file has failed, as on a full disk: measured, `record` printed its error line and then
+// died of SIGSEGV at exit. Every file here is closed by its owner (RAII) before exit, so the
+// handler has nothing left to do; it must be switched off before the library initialises.
+const bool g_no_atexit_handler = [] {
+    H5dont_atexit();
+    return true;
+}();
+
+herr_t keep_description(unsigned, const H5E_error2_t* error, void* data) {
+    if (error->desc != nullptr && error->desc[0] != '\0') *static_cast<std::string*>(data) = error->desc;
+    return 0;
+}
+
+}  // namespace
+
+std::string error_detail() {
+    // Walked from the API call down: the last description kept is the innermost one.
+    std::string detail;
+    H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, keep_description, &detail);
+    return detail;
 }
 
 Id& Id::operator=(Id&& other) noexcept {

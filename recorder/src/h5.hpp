@@ -12,8 +12,13 @@
 
 namespace collidescope::recorder::h5 {
 
-/// Turns off HDF5's automatic error stack printing (process-wide, idempotent).
+/// Turns off HDF5's automatic error stack printing for the calling thread (idempotent).
 void silence();
+
+/// The innermost description on the calling thread's HDF5 error stack (what the failed call
+/// found, e.g. "truncated file: eof = 1000, sblock->base_addr = 0, stored_eof = 2000"); ""
+/// when the stack is empty.
+std::string error_detail();
 
 /// Owns one hid_t and closes it with the matching H5*close.
 class Id {

@@ -34,7 +34,11 @@ void Recording::Impl::open_file() {
     where.check(H5Pset_metadata_read_attempts(fapl.get(), k_swmr_read_attempts), "cannot set read attempts");
     hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, fapl.get());
     if (id < 0) id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-    file = where.own(id, H5Fclose, "cannot open the HDF5 file (corrupt or truncated?)");
+    if (id < 0) {
+        const std::string detail = h5::error_detail();
+        where.fail("cannot open the HDF5 file (corrupt or truncated?)" + (detail.empty() ? "" : ": " + detail));
+    }
+    file = h5::Id(id, H5Fclose);
 }
 
 void Recording::Impl::check_schema() {
@@ -55,6 +59,10 @@ void Recording::Impl::check_schema() {
     }
     if (*major < 1) where.fail("bad schema version " + std::to_string(*major));
     finished = h5::read_int_attr(where, file.get(), schema::k_attr_finished).value_or(0) == 1;
+    interrupted = h5::read_string_attr(where, file.get(), schema::k_attr_interrupted).value_or("");
+    const std::int64_t begin = h5::read_int_attr(where, file.get(), "frame_begin").value_or(0);
+    const std::int64_t end = h5::read_int_attr(where, file.get(), "frame_end").value_or(0);
+    frames_requested = end > begin ? static_cast<std::uint64_t>(end - begin) : 0;
 }
 
 void Recording::Impl::count_frames() {
@@ -127,6 +135,20 @@ const std::string& Recording::path() const { return m_impl->where.file(); }
 std::int64_t Recording::version_major() const { return m_impl->version_major; }
 std::int64_t Recording::version_minor() const { return m_impl->version_minor; }
 bool Recording::finished() const { return m_impl->finished; }
+const std::string& Recording::interrupted() const { return m_impl->interrupted; }
+std::uint64_t Recording::frames_requested() const { return m_impl->frames_requested; }
+
+std::string Recording::partial_reason() const {
+    const std::string frames = std::to_string(m_impl->frames);
+    if (!m_impl->finished) {
+        return "not finished (the writer was killed, crashed or failed to write)";
+    }
+    if (!m_impl->interrupted.empty()) {
+        return "stopped by " + m_impl->interrupted + " after " + frames + " of " +
+               std::to_string(m_impl->frames_requested) + " frames";
+    }
+    return {};
+}
 std::uint64_t Recording::frames_complete() const { return m_impl->frames; }
 const std::vector<ObjectInfo>& Recording::objects() const { return m_impl->objects; }
 

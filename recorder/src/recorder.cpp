@@ -29,6 +29,16 @@ std::vector<float> to_float(const std::vector<Vec3>& vertices) {
     return out;
 }
 
+// "run.h5: frame 37: cannot reserve ... (No space left on device); the 37 frames before it
+// are intact and the file is left unfinished (partial)".
+std::string write_error_line(const std::string& what, std::uint64_t intact, bool damaged) {
+    if (damaged) {
+        return what + "; the write failed inside the frame, so the file may not open (the " + std::to_string(intact) +
+               " frames before it were flushed)";
+    }
+    return what + "; the " + std::to_string(intact) + " frames before it are intact and the file is left unfinished (partial)";
+}
+
 }  // namespace
 
 struct Recorder::State {
@@ -57,6 +67,7 @@ struct Recorder::State {
 };
 
 void Recorder::State::write_loop() {
+    h5::silence();
     // Below the engine's threads: on a machine with few cores, a writer competing for a core
     // stalls the engine's parallel loops. It catches up between frames (the queue absorbs it).
     if (config.writer_nice > 0) {
@@ -85,9 +96,9 @@ void Recorder::State::write_loop() {
                 budget.update(usage);
             }
         }
-    } catch (...) {
+    } catch (const std::exception& failure) {
         std::lock_guard lock(error_mutex);
-        error = std::current_exception();
+        error = std::make_exception_ptr(InputError(write_error_line(failure.what(), summary.frames, file.damaged())));
         queue.close(true);  // the engine's next push returns false and sees the error
     }
 }
@@ -169,14 +180,14 @@ void Recorder::on_frame(const FrameReport& report) {
     if (!m_state->queue.push(m_state->copy(report))) m_state->rethrow_writer_error();
 }
 
-RecordSummary Recorder::finish() {
+RecordSummary Recorder::finish(const std::string& interrupted) {
     State& state = *m_state;
     state.finished = true;
     state.queue.close();
     if (state.writer.joinable()) state.writer.join();
     state.rethrow_writer_error();
     state.file.close();
-    TraceFile::mark_finished(state.config.path, state.summary.frames, state.budget.positions_stride());
+    TraceFile::mark_finished(state.config.path, state.summary.frames, state.budget.positions_stride(), interrupted);
     state.summary.positions_stride = state.budget.positions_stride();
     state.summary.depth_stride = state.budget.depth_stride();
     state.summary.queue_peak_bytes = state.queue.peak_bytes();

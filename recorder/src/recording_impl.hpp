@@ -20,6 +20,8 @@ struct Recording::Impl {
     std::int64_t version_major = 0;
     std::int64_t version_minor = 0;
     bool finished = false;
+    std::string interrupted;            ///< attribute `interrupted` ("" when absent)
+    std::uint64_t frames_requested = 0; ///< frame_end - frame_begin (0 when absent)
     std::uint64_t frames = 0;
     std::vector<ObjectInfo> objects;
 

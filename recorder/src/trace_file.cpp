@@ -2,9 +2,12 @@
 
 #include "trace_file.hpp"
 
+#include "collidescope/error.hpp"
 #include "collidescope/recorder/schema.hpp"
 #include "collidescope/stats.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <ctime>
 #include <thread>
 
@@ -49,6 +52,7 @@ TraceFile::TraceFile(const std::filesystem::path& path, const SessionInfo& sessi
     create_details();
     create_objects(session, first, deflate_level);
     m_where.check(H5Fstart_swmr_write(m_file.get()), "cannot start SWMR writing");
+    m_reserve = std::make_unique<SpaceReserve>(path);
 }
 
 TraceFile::Column TraceFile::make_column(const std::string& path, const h5::ExtensibleSpec& spec, hid_t loc) {
@@ -154,6 +158,38 @@ void TraceFile::append_topology(ObjectColumns& columns, const Topology& topology
 }
 
 void TraceFile::append(const FrameRecord& record, Keep keep) {
+    const std::string frame = "frame " + std::to_string(record.frame);
+    try {
+        reserve_space(record);
+    } catch (const InputError& error) {  // nothing of the frame written: the file is as it was
+        throw InputError(m_where.file() + ": " + frame + ": " + std::string(error.what()).substr(m_where.file().size() + 2));
+    }
+    errno = 0;
+    try {
+        write_frame(record, keep);
+    } catch (const InputError& error) {
+        m_damaged = true;
+        // HDF5 reports a failed write without its reason; errno still holds the system's.
+        const int system_error = errno;
+        std::string line = m_where.file() + ": " + frame + ": " + std::string(error.what()).substr(m_where.file().size() + 2);
+        if (system_error == ENOSPC || system_error == EFBIG || system_error == EDQUOT || system_error == EIO) {
+            line += " (" + std::string(std::strerror(system_error)) + ")";
+        }
+        throw InputError(line);
+    }
+}
+
+void TraceFile::reserve_space(const FrameRecord& record) {
+    haddr_t end = 0;
+    m_where.check(H5Fget_eoa(m_file.get(), &end), "cannot read the end of the file");
+    // The frame's uncompressed bytes bound its chunks; chunk indexes and object headers grow
+    // by far less than the margin.
+    constexpr std::uint64_t k_margin = 256u << 10;
+    const std::uint64_t bytes = record.bytes();
+    m_reserve->reserve(end, bytes + bytes / 16 + k_margin);
+}
+
+void TraceFile::write_frame(const FrameRecord& record, Keep keep) {
     if (record.objects.size() != m_objects.size()) {
         m_where.fail("frame " + std::to_string(record.frame) + " has " + std::to_string(record.objects.size()) +
                      " objects, the recording " + std::to_string(m_objects.size()));
@@ -181,7 +217,7 @@ void TraceFile::append(const FrameRecord& record, Keep keep) {
     append_details(record, keep.depth);
     // The frame index last: a reader counts a frame complete when every dataset has its row.
     append_value(m_index, H5T_NATIVE_UINT32, &record.frame);
-    m_where.check(H5Fflush(m_file.get(), H5F_SCOPE_LOCAL), "cannot flush frame " + std::to_string(record.frame));
+    m_where.check(H5Fflush(m_file.get(), H5F_SCOPE_LOCAL), "cannot flush the file");
 }
 
 std::uint64_t TraceFile::file_bytes() const {
@@ -211,15 +247,18 @@ void TraceFile::close() {
     m_gpu_survivors.dataset.reset();
     m_gpu_survivor_offsets.dataset.reset();
     m_depth = DepthColumns{};
+    if (m_reserve) m_reserve->close();
     if (m_file.valid() && !m_file.reset()) m_where.fail("cannot close the recording (disk full?)");
 }
 
-void TraceFile::mark_finished(const std::filesystem::path& path, std::uint64_t frames, std::uint32_t positions_stride) {
+void TraceFile::mark_finished(const std::filesystem::path& path, std::uint64_t frames, std::uint32_t positions_stride,
+                              const std::string& interrupted) {
     const h5::Where where(path.string());
     const h5::Id file = where.own(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose,
                                   "cannot reopen the recording to mark it finished");
     h5::write_attr(where, file.get(), schema::k_attr_frames_recorded, static_cast<std::int64_t>(frames));
     h5::write_attr(where, file.get(), schema::k_attr_positions_stride, std::int64_t{positions_stride});
+    if (!interrupted.empty()) h5::write_attr(where, file.get(), schema::k_attr_interrupted, interrupted);
     h5::write_attr(where, file.get(), schema::k_attr_finished, std::int64_t{1});
 }
 

@@ -4,10 +4,12 @@
 
 #include "frame_queue.hpp"
 #include "h5.hpp"
+#include "space_reserve.hpp"
 
 #include "collidescope/recorder/recorder.hpp"
 
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <string>
 #include <utility>
@@ -27,9 +29,13 @@ public:
         bool positions = true;
         bool depth = true;  ///< the depth images (GpuFrameInfo::depth_images)
     };
-    /// Appends one frame (positions and depth images only as `keep` says), the frame index
-    /// last, and flushes the file.
+    /// Reserves the frame's disk space (space_reserve.hpp), then appends it (positions and
+    /// depth images only as `keep` says), the frame index last, and flushes the file. Throws
+    /// InputError naming the file, the frame and, for a failed write, the system's reason.
     void append(const FrameRecord& record, Keep keep);
+    /// True once a write failed inside a frame (after its space was reserved: should not
+    /// happen): HDF5 may have written part of it, and the file may not open.
+    bool damaged() const { return m_damaged; }
     /// Current size of the file in bytes.
     std::uint64_t file_bytes() const;
     /// Bytes the positions datasets occupy (all objects).
@@ -39,8 +45,10 @@ public:
     /// Closes the file (SWMR ends). Throws when the final flush fails.
     void close();
 
-    /// Reopens a closed recording and adds the `finished` attributes.
-    static void mark_finished(const std::filesystem::path& path, std::uint64_t frames, std::uint32_t positions_stride);
+    /// Reopens a closed recording and adds the `finished` attributes (and `interrupted` when
+    /// not empty: the signal that stopped the run early).
+    static void mark_finished(const std::filesystem::path& path, std::uint64_t frames, std::uint32_t positions_stride,
+                              const std::string& interrupted);
 
 private:
     struct Column {
@@ -52,6 +60,8 @@ private:
         Column triangles, topology_offsets, topology_from_frame, topology_vertex_count, positions, vertex_offsets;
     };
 
+    void reserve_space(const FrameRecord& record);
+    void write_frame(const FrameRecord& record, Keep keep);
     Column make_column(const std::string& path, const h5::ExtensibleSpec& spec, hid_t loc = -1);
     void write_metadata(const SessionInfo& session);
     void create_frames(std::span<const std::string> methods);
@@ -83,7 +93,9 @@ private:
     DepthColumns m_depth;                             ///< 1.2
     std::vector<std::uint16_t> m_pixels;              ///< scratch: one image quantised
     std::vector<ObjectColumns> m_objects;
+    std::unique_ptr<SpaceReserve> m_reserve;  ///< opened once SWMR writing started
     int m_deflate;
+    bool m_damaged = false;
     hsize_t m_depth_chunk;  ///< pixels per chunk of /gpu/depth/pixels: one image
 };
 

@@ -8,9 +8,15 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <charconv>
+#include <chrono>
+#include <thread>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -52,6 +58,75 @@ std::string read_text(const std::filesystem::path& file) {
     std::ostringstream text;
     text << in.rdbuf();
     return text.str();
+}
+
+CliProcess::CliProcess(const std::vector<std::string>& args, const std::filesystem::path& directory,
+                       std::uint64_t file_size_limit)
+    : m_directory(directory) {
+    // Everything the child needs is prepared before fork: after it, only async-signal-safe calls.
+    const std::string dir = directory.string();
+    const std::string out = (directory / "cli.stdout").string();
+    const std::string err = (directory / "cli.stderr").string();
+    std::vector<std::string> words = {COLLIDESCOPE_BIN};
+    words.insert(words.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (std::string& word : words) argv.push_back(word.data());
+    argv.push_back(nullptr);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        const int out_fd = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        const int err_fd = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        const int null_fd = open("/dev/null", O_RDONLY);
+        if (chdir(dir.c_str()) != 0 || out_fd < 0 || err_fd < 0 || null_fd < 0) _exit(127);
+        dup2(null_fd, STDIN_FILENO);
+        dup2(out_fd, STDOUT_FILENO);
+        dup2(err_fd, STDERR_FILENO);
+        if (file_size_limit > 0) {
+            const rlimit limit = {file_size_limit, file_size_limit};
+            setrlimit(RLIMIT_FSIZE, &limit);
+            signal(SIGXFSZ, SIG_IGN);  // kept across exec: writes fail with EFBIG instead
+        }
+        execv(argv[0], argv.data());
+        _exit(127);
+    }
+    EXPECT_GT(pid, 0) << "fork failed";
+    m_pid = pid;
+}
+
+CliProcess::~CliProcess() {
+    if (m_pid <= 0) return;
+    kill(m_pid, SIGKILL);
+    waitpid(m_pid, nullptr, 0);
+}
+
+std::string CliProcess::err() const { return read_text(m_directory / "cli.stderr"); }
+
+bool CliProcess::wait_until(const std::function<bool()>& done, double seconds) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (std::chrono::steady_clock::now() < deadline) {
+        if (done()) return true;
+        // Ended (a zombie until wait()): one last look.
+        siginfo_t info{};
+        if (waitid(P_PID, static_cast<id_t>(m_pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid != 0) {
+            return done();
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    return false;
+}
+
+void CliProcess::send(int signal) { kill(m_pid, signal); }
+
+CliResult CliProcess::wait() {
+    int status = 0;
+    waitpid(m_pid, &status, 0);
+    m_pid = -1;
+    CliResult result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    m_term_signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+    result.out = read_text(m_directory / "cli.stdout");
+    result.err = read_text(m_directory / "cli.stderr");
+    return result;
 }
 
 CliResult run_cli(const std::vector<std::string>& args, const std::filesystem::path& directory) {

@@ -6,7 +6,9 @@
 #include "collidescope/scene.hpp"
 #include "collidescope/types.hpp"
 
+#include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,35 @@ struct CliResult {
 
 /// Runs COLLIDESCOPE_BIN with `args` (each passed as one shell word) in `directory`.
 CliResult run_cli(const std::vector<std::string>& args, const std::filesystem::path& directory);
+
+/// COLLIDESCOPE_BIN running in the background, for tests that signal it or limit its writes.
+/// stdout and stderr go to cli.stdout and cli.stderr in its directory.
+class CliProcess {
+public:
+    /// Starts it in `directory`. `file_size_limit` > 0 sets RLIMIT_FSIZE in the child with
+    /// SIGXFSZ ignored, so a write past that size fails with EFBIG, as on a full disk.
+    CliProcess(const std::vector<std::string>& args, const std::filesystem::path& directory,
+               std::uint64_t file_size_limit = 0);
+    /// Kills (SIGKILL) and reaps it if it still runs.
+    ~CliProcess();
+    CliProcess(const CliProcess&) = delete;
+    CliProcess& operator=(const CliProcess&) = delete;
+
+    /// stderr so far.
+    std::string err() const;
+    /// Polls until `done()` holds (true) or the process ends or `seconds` pass (false).
+    bool wait_until(const std::function<bool()>& done, double seconds = 120);
+    void send(int signal);
+    /// Waits for the end. exit_code: the status it exited with, -1 when a signal ended it.
+    CliResult wait();
+    /// The signal that ended it (after wait), or 0.
+    int term_signal() const { return m_term_signal; }
+
+private:
+    std::filesystem::path m_directory;
+    int m_pid = -1;
+    int m_term_signal = 0;
+};
 
 /// One line of the pairs TSV.
 struct FramePair {

@@ -6,8 +6,13 @@
 // (in checksummed object headers), because 1.10.8 also crashed here (trial 60 of seed 6150)
 // iterating a group whose dense link storage, a fractal heap without checksums, was corrupt.
 
+#include "recording_helpers.hpp"
+
 #include "app/cli_runner.hpp"
+#include "app/error_cases.hpp"
 #include "mesh/temp_files.hpp"
+
+#include "collidescope/recorder/schema.hpp"
 
 #include <gtest/gtest.h>
 
@@ -54,6 +59,51 @@ TEST(RecorderCorruption, RandomBytesNeverCrashTheReader) {
     }
     std::printf("corruption test: %d valid, %d invalid, %d unreadable\n", outcomes[0], outcomes[1], outcomes[2]);
     EXPECT_GT(outcomes[1] + outcomes[2], 0) << "the damage is seen at least sometimes";
+}
+
+// Each class of bad recording through inspect, validate and replay: one line naming the file
+// and the dataset or frame, exit 2 (unreadable) or, for validate, 1 (invalid).
+TEST(RecorderCorruption, EachClassOfBadRecordingGetsOneLineNamingIt) {
+    namespace fs = std::filesystem;
+    namespace schema = recorder::schema;
+    TempDir base;
+    ASSERT_EQ(run_cli({"record", "--scene", "demo:small", "-o", "run.h5", "-q"}, base.path()).exit_code, 0);
+    const fs::path run = base.path() / "run.h5";
+    const std::string whole = read_bytes(run);
+    const auto copy_as = [&](const std::string& name, std::function<void(const fs::path&)> edit) {
+        return [=](const fs::path& dir) {
+            fs::copy_file(run, dir / name);
+            if (edit) edit(dir / name);
+        };
+    };
+    const auto bytes_as = [](const std::string& name, const std::string& bytes) {
+        return [=](const fs::path& dir) { std::ofstream(dir / name, std::ios::binary) << bytes; };
+    };
+    const std::vector<testing::ErrorCase> cases = {
+        {"recording: missing file", nullptr, {"inspect", "missing.h5"}, {"missing.h5", "no such file"}},
+        {"recording: not HDF5", bytes_as("text.h5", "just text\n"), {"inspect", "text.h5"}, {"text.h5", "not an HDF5 file"}},
+        {"recording: cut to half its size", bytes_as("cut.h5", whole.substr(0, whole.size() / 2)), {"inspect", "cut.h5"},
+         {"cut.h5"}},
+        {"recording: HDF5 but not a recording", [](const fs::path& d) { testing::write_foreign_hdf5(d / "foreign.h5"); },
+         {"validate", "foreign.h5"}, {"foreign.h5", "not a collidescope recording"}},
+        {"recording: newer schema major",
+         copy_as("newer.h5", [](const fs::path& f) { testing::set_int_attr(f, "/", schema::k_attr_version_major, 2); }),
+         {"inspect", "newer.h5"}, {"newer.h5", "2.", "newer than this collidescope reads"}},
+        {"recording: a dataset missing",
+         copy_as("missing_ds.h5", [](const fs::path& f) { testing::delete_link(f, "/objects/0/positions"); }),
+         {"replay", "missing_ds.h5", "-o", "frames"}, {"missing_ds.h5", "missing dataset /objects/0/positions"}},
+        {"recording: pair offsets out of range",
+         copy_as("offsets.h5", [](const fs::path& f) { testing::overwrite_u64(f, schema::k_pair_offsets, 12, 1u << 30); }),
+         {"validate", "-q", "offsets.h5"}, {"offsets.h5", schema::k_pair_offsets, "frame 11", "out of range"}, 1},
+        {"recording: never finished (killed writer)",
+         copy_as("unfinished.h5", [](const fs::path& f) { testing::delete_attr(f, "/", schema::k_attr_finished); }),
+         {"validate", "-q", "unfinished.h5"}, {"unfinished.h5", "partial", "not finished", "frames complete"}, 1},
+    };
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+        const fs::path dir = base.path() / ("case" + std::to_string(k));  // one TempDir per test
+        fs::create_directories(dir);
+        testing::expect_error_case(cases[k], dir);
+    }
 }
 
 }  // namespace

@@ -179,7 +179,7 @@ TEST(Schema12, DecisionHybridPassesSurvivorsAndDepthComeBack) {
     record_synthetic(file);
     const recorder::Recording rec(file);
     EXPECT_EQ(rec.version_major(), 1);
-    EXPECT_EQ(rec.version_minor(), 2);
+    EXPECT_EQ(rec.version_minor(), recorder::schema::k_version_minor);
     ASSERT_EQ(rec.frames_complete(), k_frames);
     const auto decision = rec.frame_values("decision");
     const auto hybrid = rec.frame_values("hybrid");

@@ -44,7 +44,10 @@ private:
             if (m_text[m_pos] == '\n') ++m_line;
             ++m_pos;
         }
-        if (m_pos >= m_text.size()) throw_item_error(m_source, element.name, item, "file truncated");
+        if (m_pos >= m_text.size()) {
+            fail(element, item, "file truncated: expected " + std::to_string(element.count) + " " + element.name +
+                                    " items, the file ends inside this one");
+        }
         const std::size_t start = m_pos;
         while (m_pos < m_text.size() && !is_space(m_text[m_pos])) ++m_pos;
         return m_text.substr(start, m_pos - start);
@@ -70,10 +73,11 @@ private:
 
     std::int64_t parse_count(const Element& element, std::uint64_t item) {
         const std::int64_t count = parse_number<std::int64_t>(element, item);
-        if (count < 0) fail(element, item, "negative list length");
+        if (count < 0) fail(element, item, "negative list length " + std::to_string(count));
         // Each value takes at least one character: a longer list cannot fit in the rest.
         if (static_cast<std::uint64_t>(count) > m_text.size() - m_pos) {
-            throw_item_error(m_source, element.name, item, "file truncated");
+            fail(element, item, "file truncated: a list of " + std::to_string(count) + " values does not fit in the " +
+                                    std::to_string(m_text.size() - m_pos) + " bytes left");
         }
         return count;
     }

@@ -76,10 +76,11 @@ class BinaryBody {
 public:
     BinaryBody(std::span<const std::byte> body, const Layout& layout, MeshData& mesh,
                std::string_view source)
-        : m_pos(body.data()), m_end(body.data() + body.size()), m_layout(layout), m_mesh(mesh),
-          m_source(source) {}
+        : m_pos(body.data()), m_end(body.data() + body.size()), m_body_size(body.size()),
+          m_layout(layout), m_mesh(mesh), m_source(source) {}
 
     void read(const Header& header) {
+        m_body_offset = header.body_offset;
         for (std::size_t e = 0; e < header.elements.size(); ++e) {
             const Element& element = header.elements[e];
             if (static_cast<int>(e) == m_layout.vertex_element) {
@@ -94,10 +95,21 @@ public:
 
 private:
     std::size_t remaining() const { return static_cast<std::size_t>(m_end - m_pos); }
+    // Byte offsets in the file (header included), for the truncation message.
+    std::uint64_t file_offset(const std::byte* at) const {
+        return m_body_offset + static_cast<std::uint64_t>(at - (m_end - m_body_size));
+    }
+    [[noreturn]] void truncated(const Element& element, std::uint64_t item, std::uint64_t needed,
+                                const std::byte* at) const {
+        throw_item_error(m_source, element.name, item,
+                         "file truncated: expected " + std::to_string(needed) + " bytes at byte " +
+                             std::to_string(file_offset(at)) + ", the file ends at byte " +
+                             std::to_string(file_offset(m_end)));
+    }
 
     // The next `size` bytes of item `item`, or the truncation error.
     const std::byte* take(std::uint64_t size, const Element& element, std::uint64_t item) {
-        if (size > remaining()) throw_item_error(m_source, element.name, item, "file truncated");
+        if (size > remaining()) truncated(element, item, size, m_pos);
         const std::byte* start = m_pos;
         m_pos += size;
         return start;
@@ -106,9 +118,7 @@ private:
     // Fixed-size records: checks that all `count` fit, else names the first that does not.
     void require_records(const Element& element, std::size_t stride) const {
         const std::uint64_t available = remaining() / stride;
-        if (available < element.count) {
-            throw_item_error(m_source, element.name, available, "file truncated");
-        }
+        if (available < element.count) truncated(element, available, stride, m_pos + available * stride);
     }
 
     // Walks one item property by property, handing scalars and lists to the callbacks.
@@ -123,7 +133,10 @@ private:
             }
             const std::byte* count_at = take(scalar_size(property.count_type), element, item);
             const std::int64_t count = load_integer<Swap>(property.count_type, count_at);
-            if (count < 0) throw_item_error(m_source, element.name, item, "negative list length");
+            if (count < 0) {
+                throw_item_error(m_source, element.name, item, "negative list length " + std::to_string(count) +
+                                                                   " at byte " + std::to_string(file_offset(count_at)));
+            }
             const std::uint64_t size = static_cast<std::uint64_t>(count) * scalar_size(property.type);
             on_list(p, count, take(size, element, item));
         }
@@ -284,6 +297,8 @@ private:
 
     const std::byte* m_pos;
     const std::byte* m_end;
+    std::size_t m_body_size;
+    std::uint64_t m_body_offset = 0;  ///< where the body starts in the file (after end_header)
     const Layout& m_layout;
     MeshData& m_mesh;
     std::string_view m_source;

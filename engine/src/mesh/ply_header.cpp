@@ -71,7 +71,8 @@ public:
                 if (header.elements.empty()) fail("property before any element");
                 header.elements.back().properties.push_back(parse_property(words));
             } else {
-                fail("unknown header keyword '" + std::string(words[0]) + "'");
+                fail("unknown header keyword '" + std::string(words[0]) +
+                     "' (expected format, element, property, comment, obj_info or end_header)");
             }
         }
         if (!has_format) fail("no format line");

@@ -44,6 +44,8 @@ FileObject open_object(const std::string& spec, const std::string& name) {
         object.files = {path};
     } else if (const std::optional<FramePattern> pattern = parse_frame_pattern(spec)) {
         object.files = expand_frame_pattern(*pattern, spec);
+    } else if (std::filesystem::is_directory(path, error)) {
+        throw InputError(spec + ": is a directory, expected a mesh file, a frame pattern or a scene.json");
     } else {
         throw InputError(spec + ": no such file");
     }

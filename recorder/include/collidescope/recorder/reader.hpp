@@ -56,6 +56,14 @@ public:
     std::int64_t version_minor() const;
     /// True when the writer closed the file cleanly (attribute `finished`).
     bool finished() const;
+    /// The signal that stopped a finished run before its last frame (attribute `interrupted`,
+    /// schema 1.3: "SIGINT", "SIGTERM"); "" when it ran to the end or did not finish.
+    const std::string& interrupted() const;
+    /// Frames the session asked for (attributes frame_end - frame_begin).
+    std::uint64_t frames_requested() const;
+    /// Why the file is partial, in words ("stopped by SIGINT after 12 of 60 frames", "not
+    /// finished (the writer was killed, ...)"); "" for a complete recording.
+    std::string partial_reason() const;
     /// Frames whose every dataset row is present.
     std::uint64_t frames_complete() const;
     /// Root attributes as text, in the file's order.

@@ -70,11 +70,14 @@ public:
     Recorder& operator=(const Recorder&) = delete;
 
     /// Copies the frame into the queue (blocks while the queue is full). Rethrows, as
-    /// InputError, an error the writer thread met.
+    /// InputError, an error the writer thread met: one line naming the file, the frame it
+    /// failed on and the frames before it that are intact; the file is left unfinished
+    /// (partial), with those frames readable.
     void on_frame(const FrameReport& report) override;
-    /// Writes what is queued, closes the file and marks it finished. Throws InputError on
-    /// any write failure.
-    RecordSummary finish();
+    /// Writes what is queued, closes the file and marks it finished. `interrupted` names the
+    /// signal that stopped the run early ("SIGINT"; "" = it ran to its last frame): the file is
+    /// then marked partial (attribute `interrupted`). Throws InputError on any write failure.
+    RecordSummary finish(const std::string& interrupted = {});
 
 private:
     struct State;

@@ -19,7 +19,8 @@ inline constexpr const char* k_schema_name = "collidescope-trace";
 inline constexpr std::int64_t k_version_major = 1;
 /// 1.1: /frames/gpu, /frames/aabb, /gpu. 1.2: /frames/decision, /frames/hybrid, /gpu/survivors,
 /// /gpu/depth; string attributes fixed-length (1.0 and 1.1 wrote variable-length ones).
-inline constexpr std::int64_t k_version_minor = 2;
+/// 1.3: the root attribute `interrupted` (a run stopped early by a signal).
+inline constexpr std::int64_t k_version_minor = 3;
 
 // Root attributes.
 inline constexpr const char* k_attr_schema = "schema";
@@ -28,6 +29,9 @@ inline constexpr const char* k_attr_version_minor = "schema_version_minor";
 inline constexpr const char* k_attr_finished = "finished";  ///< 1 once closed cleanly (absent until then)
 inline constexpr const char* k_attr_frames_recorded = "frames_recorded";  ///< set with `finished`
 inline constexpr const char* k_attr_positions_stride = "positions_stride";  ///< set with `finished`
+/// Set with `finished` when the run stopped before its last frame: the signal ("SIGINT",
+/// "SIGTERM") that stopped it; the file then holds fewer frames than frame_begin..frame_end.
+inline constexpr const char* k_attr_interrupted = "interrupted";
 /// Every dataset's unit, H5MD style: a string attribute named `unit`.
 inline constexpr const char* k_attr_unit = "unit";
 /// On each /objects/<k> group: the object's name.
