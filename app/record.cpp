@@ -88,9 +88,11 @@ std::string stride_text(std::uint32_t stride, const char* what) {
     return "every " + std::to_string(stride) + (stride == 2 ? "nd " : "th ") + what + " kept at the end";
 }
 
-std::string summary_line(const recorder::RecordSummary& summary, const std::string& path, std::uint64_t budget) {
+std::string summary_line(const recorder::RecordSummary& summary, const std::string& path, std::uint64_t budget,
+                         std::uint64_t queue_cap) {
     std::string line = "recorded " + std::to_string(summary.frames) + " frames to " + path + " (" +
-                       format_size(summary.file_bytes) + ")";
+                       format_size(summary.file_bytes) + "; writer queue peak " + format_size(summary.queue_peak_bytes) +
+                       " of " + format_size(queue_cap) + ")";
     if (summary.depth_frames > 0) line += ", depth images on " + std::to_string(summary.depth_frames) + " frames";
     if (budget == 0) return line;
     line += "; budget " + format_size(budget) + ": ";
@@ -147,7 +149,7 @@ int run_record(const RecordOptions& options) {
     const int signal = interrupt.signal();
     const recorder::RecordSummary summary = recorder.finish(signal != 0 ? signal_name(signal) : std::string());
     progress.finish();
-    progress.log(summary_line(summary, options.output, budget));
+    progress.log(summary_line(summary, options.output, budget, recorder_config.queue_bytes));
     if (signal == 0) return 0;
     progress.log("interrupted by " + signal_name(signal) + " after " + std::to_string(summary.frames) + " of " +
                  std::to_string(range.end - range.begin) + " frames (frames " + std::to_string(range.begin) + ".." +

@@ -100,7 +100,8 @@ TEST(MeshFile, TruncatedPlyFileNamesFileAndVertex) {
     bytes.resize(header + 12 * 3 + 5);
     write_bytes(dir / "cloth.0003.ply", bytes);
     EXPECT_EQ(input_error([&] { read_mesh_file(dir / "cloth.0003.ply"); }),
-              (dir / "cloth.0003.ply").string() + ": vertex 3: file truncated");
+              (dir / "cloth.0003.ply").string() + ": vertex 3: file truncated: expected 12 bytes at byte " +
+                  std::to_string(header + 36) + ", the file ends at byte " + std::to_string(header + 41));
 }
 
 // OFF goes through assimp, whose OFF importer keeps the file's vertices and faces.

@@ -74,10 +74,11 @@ TEST(PlyAscii, SkipsExtraPropertiesAndElementsAndSplitsFans) {
 TEST(PlyAscii, TruncatedNamesElementAndItem) {
     const std::string text(k_ascii_ply.substr(0, k_ascii_ply.find("1 9 1 0 2")));
     const std::string message = input_error([&] { parse_ply(as_bytes(text), "cloth.0003.ply"); });
-    EXPECT_EQ(message, "cloth.0003.ply: vertex 2: file truncated");
+    EXPECT_EQ(message, "cloth.0003.ply: vertex 2: file truncated: expected 5 vertex items, the file ends inside this one "
+                       "(line 21)");
     const std::string in_faces(k_ascii_ply.substr(0, k_ascii_ply.size() - 6));
     EXPECT_EQ(input_error([&] { parse_ply(as_bytes(in_faces), "a.ply"); }),
-              "a.ply: face 2: file truncated");
+              "a.ply: face 2: file truncated: expected 3 face items, the file ends inside this one (line 28)");
 }
 
 TEST(PlyAscii, BadNumberNamesItemAndLine) {
@@ -180,14 +181,17 @@ TEST(PlyBinary, TruncatedVertexAndFaceNamed) {
     // Vertex records are 16 bytes: cut inside vertex 2.
     const auto cut = [&](std::size_t size) { return std::span<const std::byte>(bytes.data(), size); };
     EXPECT_EQ(input_error([&] { parse_ply(cut(header + 40), "cloth.0003.ply"); }),
-              "cloth.0003.ply: vertex 2: file truncated");
+              "cloth.0003.ply: vertex 2: file truncated: expected 16 bytes at byte " + std::to_string(header + 32) +
+                  ", the file ends at byte " + std::to_string(header + 40));
     // Faces start after 5 * 16 bytes; face 0 takes 13 bytes, cut inside face 1's list.
+    // Its count byte is there; its four indices (16 bytes) are not.
     EXPECT_EQ(input_error([&] { parse_ply(cut(header + 80 + 13 + 5), "cloth.0003.ply"); }),
-              "cloth.0003.ply: face 1: file truncated");
+              "cloth.0003.ply: face 1: file truncated: expected 16 bytes at byte " + std::to_string(header + 94) +
+                  ", the file ends at byte " + std::to_string(header + 98));
     const ByteWriter general_writer = binary_ply(false);
     const std::vector<std::byte>& general = general_writer.bytes();
     EXPECT_EQ(input_error([&] { parse_ply(std::span(general.data(), general.size() - 3), "g.ply"); }),
-              "g.ply: face 1: file truncated");
+              "g.ply: face 1: file truncated: expected 6 bytes at byte 407, the file ends at byte 411");
 }
 
 TEST(PlyBinary, FacesBeforeVerticesAndIntegerCoordinates) {
@@ -242,9 +246,11 @@ TEST(PlyErrors, HugeCountsFailWithoutAllocating) {
     w.text("ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\n"
            "property float y\nproperty float z\nend_header\n");
     w.put(1.0f);
-    EXPECT_EQ(input_error([&] { parse_ply(w.span(), "big.ply"); }), "big.ply: vertex 0: file truncated");
+    EXPECT_EQ(input_error([&] { parse_ply(w.span(), "big.ply"); }),
+              "big.ply: vertex 0: file truncated: expected 12 bytes at byte 124, the file ends at byte 128");
     const std::string text = std::string(k_ascii_header) + "200 0 1 2\n";
-    EXPECT_EQ(input_error([&] { parse_ply(as_bytes(text), "l.ply"); }), "l.ply: face 0: file truncated");
+    EXPECT_EQ(input_error([&] { parse_ply(as_bytes(text), "l.ply"); }),
+              "l.ply: face 0: file truncated: a list of 200 values does not fit in the 7 bytes left (line 14)");
 }
 
 }  // namespace

@@ -80,7 +80,8 @@ TEST(FileSource, ReadsLazilyAndNamesTheFrameOfABadFile) {
     EXPECT_NO_THROW(scene.source->frame(0));
     EXPECT_NO_THROW(scene.source->frame(1));
     EXPECT_EQ(input_error([&] { scene.source->frame(2); }),
-              bad + ": vertex 2: file truncated (object 'cloth', frame 2)");
+              bad + ": vertex 2: file truncated: expected 12 bytes at byte 225, the file ends at byte 229 (object 'cloth', "
+                    "frame 2)");
     EXPECT_THROW(scene.source->frame(3), std::out_of_range);
 }
 
