@@ -111,6 +111,12 @@ std::vector<ErrorCase> scene_cases() {
         {"frame pattern matching no file", nullptr, check({"nothing.####.ply"}), {"nothing.####.ply", "no file matches"}},
         {"frame pattern with two number fields", sequence("seq.", 2), check({"seq.%d.%04d.ply"}),
          {"seq.%d.%04d.ply", "more than one"}},
+        {"frame pattern with a gap in its numbers",
+         [=](const fs::path& d) {
+             sequence("gap.", 3)(d);
+             write_ply(d / "gap.5.ply", testing::grid_sheet(2, 1.0));
+         },
+         check({"gap.%d.ply"}), {"gap.%d.ply", "gap.3.ply is missing", "gap.5.ply exists", "0 to 5"}},
         {"objects with different frame counts",
          [=](const fs::path& d) {
              sequence("long.", 3)(d);

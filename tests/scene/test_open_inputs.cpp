@@ -37,7 +37,7 @@ Scene open(std::vector<std::string> inputs) { return open_inputs(inputs); }
 
 TEST(OpenInputs, PrintfPatternTakesConsecutiveFramesFromTheFirst) {
     TempDir dir;
-    for (int frame : {3, 4, 5, 7}) {
+    for (int frame : {3, 4, 5}) {
         write_ply(dir / numbered_name("cloth.", frame, ".ply", 4), frame_mesh(frame));
     }
     write_ply(dir / "cloth.002.ply", frame_mesh(2));  // not what %04d writes
@@ -51,6 +51,20 @@ TEST(OpenInputs, PrintfPatternTakesConsecutiveFramesFromTheFirst) {
     const Frame frame = scene.source->frame(2);
     EXPECT_EQ(frame.index, 2u);
     EXPECT_EQ(frame.objects[0].vertices, frame_mesh(5).vertices);
+}
+
+TEST(OpenInputs, AGapInThePatternsFramesNamesTheMissingFile) {
+    TempDir dir;
+    for (int frame : {3, 4, 5, 7, 8}) write_ply(dir / numbered_name("cloth.", frame, ".ply", 4), frame_mesh(frame));
+    try {
+        open({(dir / "cloth.%04d.ply").string()});
+        FAIL() << "a gap in the frame numbers was accepted";
+    } catch (const InputError& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("cloth.0006.ply is missing"), std::string::npos) << message;
+        EXPECT_NE(message.find("cloth.0008.ply exists"), std::string::npos) << message;
+        EXPECT_NE(message.find("frames 3 to 8"), std::string::npos) << message;
+    }
 }
 
 TEST(OpenInputs, HashAndPlainPrintfPatterns) {

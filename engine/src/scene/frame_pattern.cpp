@@ -96,8 +96,17 @@ std::vector<std::filesystem::path> expand_frame_pattern(const FramePattern& patt
         if (const auto number = pattern.match(it->path().filename().string())) numbers.insert(*number);
     }
     if (numbers.empty()) throw InputError(spec + ": no file matches this frame pattern");
+    // A gap would silently drop every frame after it: say which file is missing instead.
+    const std::uint64_t first = *numbers.begin(), last = *numbers.rbegin();
+    if (last - first + 1 != numbers.size()) {
+        std::uint64_t missing = first;
+        while (numbers.contains(missing)) ++missing;
+        throw InputError(spec + ": frame file " + (pattern.directory / pattern.file_name(missing)).string() +
+                         " is missing, but " + pattern.file_name(last) + " exists: expected consecutive frames " +
+                         std::to_string(first) + " to " + std::to_string(last));
+    }
     std::vector<std::filesystem::path> files;
-    for (std::uint64_t number = *numbers.begin(); numbers.contains(number); ++number) {
+    for (std::uint64_t number = first; number <= last; ++number) {
         files.push_back(pattern.directory / pattern.file_name(number));
     }
     return files;

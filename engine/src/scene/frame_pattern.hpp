@@ -31,8 +31,9 @@ struct FramePattern {
 /// it holds none. Throws InputError naming `spec` when it holds more than one.
 std::optional<FramePattern> parse_frame_pattern(const std::string& spec);
 
-/// The consecutive frame files that exist, from the lowest matching number on. Throws
-/// InputError naming `spec` when no file matches.
+/// The frame files that exist, from the lowest matching number to the highest. Throws
+/// InputError naming `spec` when no file matches, and naming the first missing file when the
+/// numbers have a gap (a gap would otherwise drop every frame after it without a word).
 std::vector<std::filesystem::path> expand_frame_pattern(const FramePattern& pattern,
                                                         const std::string& spec);
 
