@@ -28,6 +28,17 @@ std::optional<std::vector<std::string>> visitor_names(const std::string& group) 
     return names;
 }
 
+// The decision values that hold codes (DecisionInfo's uint8 fields). Readers turn them back
+// into integers (inspect's names, replay's mode), so a value that is no uint8 is refused here:
+// converting it would be undefined behaviour.
+bool is_code_column(const std::string& group, const std::string& name) {
+    return group == "decision" && (name == "policy" || name == "mode" || name == "action" || name == "reason");
+}
+
+bool is_code(double value) {
+    return std::isnan(value) || (value >= 0 && value <= 255 && value == std::floor(value));
+}
+
 GpuPassInfo pass_from_row(const std::uint64_t* row) {
     // for_each_pass_field's order; the round-trip tests compare every field with the engine's.
     GpuPassInfo pass;
@@ -70,6 +81,10 @@ std::vector<Series<double>> Recording::frame_values(const std::string& group) co
         if (series.values.size() < impl.frames) impl.where.fail(column + " is shorter than the frames");
         for (std::size_t r = 0; r < series.values.size(); ++r) {
             if (present[r] == 0) series.values[r] = std::numeric_limits<double>::quiet_NaN();
+            if (is_code_column(group, name) && !is_code(series.values[r])) {
+                impl.where.fail(column + ": frame row " + std::to_string(r) + " holds " + std::to_string(series.values[r]) +
+                                ", not a code 0..255 (corrupt recording)");
+            }
         }
         out.push_back(std::move(series));
     }
@@ -117,9 +132,10 @@ std::vector<GpuDepthImage> Recording::depth_images(std::uint64_t row) const {
     std::vector<std::uint32_t> info(count * 4);
     std::vector<double> range(count * 2);
     std::vector<std::uint64_t> pixel_offsets(count + 1);
-    const auto read = [&](const char* path, hid_t type, std::uint64_t rows, void* out) {
+    // A copy of `begin`: clang before 16 cannot capture a structured binding.
+    const auto read = [&, first = begin](const char* path, hid_t type, std::uint64_t rows, void* out) {
         const h5::Id d = impl.dataset(path);
-        h5::read_rows(impl.where, d.get(), path, type, begin, rows, out);
+        h5::read_rows(impl.where, d.get(), path, type, first, rows, out);
     };
     read(schema::k_depth_info, H5T_NATIVE_UINT32, count, info.data());
     read(schema::k_depth_range, H5T_NATIVE_DOUBLE, count, range.data());
