@@ -10,6 +10,7 @@
 #include "collidescope/stats.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <optional>
 
@@ -82,7 +83,9 @@ std::vector<Series<double>> Recording::frame_values(const std::string& group) co
         for (std::size_t r = 0; r < series.values.size(); ++r) {
             if (present[r] == 0) series.values[r] = std::numeric_limits<double>::quiet_NaN();
             if (is_code_column(group, name) && !is_code(series.values[r])) {
-                impl.where.fail(column + ": frame row " + std::to_string(r) + " holds " + std::to_string(series.values[r]) +
+                char value[32];
+                std::snprintf(value, sizeof value, "%g", series.values[r]);
+                impl.where.fail(column + ": frame row " + std::to_string(r) + " holds " + value +
                                 ", not a code 0..255 (corrupt recording)");
             }
         }

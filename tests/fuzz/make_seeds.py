@@ -76,7 +76,7 @@ def record(binary, out, inputs, *options):
 def traces(binary, directory):
     """Recordings of two tetrahedra meeting over three frames (the second gains a triangle at
     frame 2: two topologies): the GPU cull with depth images, the hybrid method with
-    self-collision and the AABB method."""
+    self-collision, the AABB method and the decision system (its /frames/decision rows)."""
     with tempfile.TemporaryDirectory() as work:
         for f in range(3):
             write(f"{work}/a.{f:04d}.obj", obj_text(0.3 * f))
@@ -87,6 +87,7 @@ def traces(binary, directory):
         gpu = ["--gpu-resolution", "8", "--depth", "every:1"]
         record(binary, f"{directory}/gpu.h5", inputs, "--method", "gpu", *gpu)
         record(binary, f"{directory}/hybrid.h5", inputs, "--method", "hybrid", "--self", *gpu)
+        record(binary, f"{directory}/adaptive.h5", inputs, "--method", "adaptive", "--gpu-resolution", "8")
         record(binary, f"{directory}/aabb.h5", inputs, "--method", "aabb")
 
 
