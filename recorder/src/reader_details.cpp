@@ -10,6 +10,7 @@
 #include "collidescope/stats.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <optional>
 
@@ -26,6 +27,17 @@ std::optional<std::vector<std::string>> visitor_names(const std::string& group) 
     else if (group == "hybrid") for_each_hybrid_value(HybridFrameInfo{}, add);
     else return std::nullopt;
     return names;
+}
+
+// The decision values that hold codes (DecisionInfo's uint8 fields). Readers turn them back
+// into integers (inspect's names, replay's mode), so a value that is no uint8 is refused here:
+// converting it would be undefined behaviour.
+bool is_code_column(const std::string& group, const std::string& name) {
+    return group == "decision" && (name == "policy" || name == "mode" || name == "action" || name == "reason");
+}
+
+bool is_code(double value) {
+    return std::isnan(value) || (value >= 0 && value <= 255 && value == std::floor(value));
 }
 
 GpuPassInfo pass_from_row(const std::uint64_t* row) {
@@ -70,6 +82,12 @@ std::vector<Series<double>> Recording::frame_values(const std::string& group) co
         if (series.values.size() < impl.frames) impl.where.fail(column + " is shorter than the frames");
         for (std::size_t r = 0; r < series.values.size(); ++r) {
             if (present[r] == 0) series.values[r] = std::numeric_limits<double>::quiet_NaN();
+            if (is_code_column(group, name) && !is_code(series.values[r])) {
+                char value[32];
+                std::snprintf(value, sizeof value, "%g", series.values[r]);
+                impl.where.fail(column + ": frame row " + std::to_string(r) + " holds " + value +
+                                ", not a code 0..255 (corrupt recording)");
+            }
         }
         out.push_back(std::move(series));
     }
@@ -117,9 +135,10 @@ std::vector<GpuDepthImage> Recording::depth_images(std::uint64_t row) const {
     std::vector<std::uint32_t> info(count * 4);
     std::vector<double> range(count * 2);
     std::vector<std::uint64_t> pixel_offsets(count + 1);
-    const auto read = [&](const char* path, hid_t type, std::uint64_t rows, void* out) {
+    // A copy of `begin`: clang before 16 cannot capture a structured binding.
+    const auto read = [&, first = begin](const char* path, hid_t type, std::uint64_t rows, void* out) {
         const h5::Id d = impl.dataset(path);
-        h5::read_rows(impl.where, d.get(), path, type, begin, rows, out);
+        h5::read_rows(impl.where, d.get(), path, type, first, rows, out);
     };
     read(schema::k_depth_info, H5T_NATIVE_UINT32, count, info.data());
     read(schema::k_depth_range, H5T_NATIVE_DOUBLE, count, range.data());

@@ -28,7 +28,9 @@ public:
                 read_vertices(element);
             } else if (static_cast<int>(e) == m_layout.face_element) {
                 read_faces(element);
-            } else {
+            } else if (!element.properties.empty()) {
+                // An element without properties takes no text: skipping its items one by one
+                // would loop `count` times (up to 2^64) over nothing.
                 for (std::uint64_t item = 0; item < element.count; ++item) skip_item(element, item);
             }
         }

@@ -1,0 +1,133 @@
+// What `collidescope inspect` reports about a recording, gathered once (printed as text or
+// JSON by inspect.cpp; the trace fuzz target gathers it too, fuzz/trace_entry.cpp).
+
+#include "inspect_info.hpp"
+
+#include "collidescope/stats.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+namespace collidescope::app {
+namespace {
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0;
+    std::sort(values.begin(), values.end());
+    const std::size_t mid = values.size() / 2;
+    return values.size() % 2 == 1 ? values[mid] : (values[mid - 1] + values[mid]) / 2;
+}
+
+// A decision code as the reader returns it: an integer 0..255 (the reader refuses others), or
+// NaN when the frame's row holds none; NaN reads as 255, a code no name has ("unknown").
+std::uint8_t code_of(double value) { return std::isnan(value) ? 255 : static_cast<std::uint8_t>(value); }
+
+// Everything inspect reports, gathered once and printed as text or JSON.
+// Schema 1.2: the decision system's modes, switches, actions and reasons (/frames/decision),
+// and the frames that ran the hybrid framework (/frames/hybrid). NaN rows: no decision.
+void add_decisions(const recorder::Recording& rec, nlohmann::ordered_json& out) {
+    const auto column = [](const std::vector<recorder::Series<double>>& group, const char* name) {
+        for (const auto& series : group) {
+            if (series.name == name) return series.values;
+        }
+        return std::vector<double>{};
+    };
+    const auto decision = rec.frame_values("decision");
+    const std::vector<double> mode = column(decision, "mode");
+    const std::vector<double> action = column(decision, "action");
+    const std::vector<double> reason = column(decision, "reason");
+    std::map<std::string, std::uint64_t> modes, actions, reasons;
+    std::uint64_t decided = 0, switches = 0;
+    double previous = std::nan("");
+    for (std::size_t r = 0; r < mode.size(); ++r) {
+        if (std::isnan(mode[r])) continue;
+        ++decided;
+        ++modes["mode " + std::to_string(code_of(mode[r]))];
+        ++actions[decision_action_name(r < action.size() ? code_of(action[r]) : 255)];
+        ++reasons[decision_reason_name(r < reason.size() ? code_of(reason[r]) : 255)];
+        if (!std::isnan(previous) && mode[r] != previous) ++switches;
+        previous = mode[r];
+    }
+    out["decision_frames"] = decided;
+    out["modes"] = modes;
+    out["mode_switches"] = switches;
+    out["decision_actions"] = actions;
+    out["decision_reasons"] = reasons;
+    const std::vector<double> wins = column(rec.frame_values("hybrid"), "predicted_hybrid_wins");
+    std::uint64_t hybrid_frames = 0, predicted_wins = 0;
+    for (const double w : wins) {
+        hybrid_frames += std::isnan(w) ? 0 : 1;
+        predicted_wins += w == 1.0 ? 1 : 0;
+    }
+    out["hybrid_frames"] = hybrid_frames;
+    out["hybrid_predicted_wins"] = predicted_wins;
+}
+
+}  // namespace
+
+nlohmann::ordered_json inspect_info(const recorder::Recording& rec) {
+    nlohmann::ordered_json out;
+    out["file"] = rec.path();
+    out["schema_version"] = std::to_string(rec.version_major()) + "." + std::to_string(rec.version_minor());
+    out["finished"] = rec.finished();
+    out["interrupted"] = rec.interrupted();
+    out["partial"] = !rec.partial_reason().empty();
+    out["partial_reason"] = rec.partial_reason();
+    out["frames"] = rec.frames_complete();
+    nlohmann::ordered_json metadata = nlohmann::ordered_json::object();
+    for (const auto& [name, value] : rec.metadata()) metadata[name] = value;
+    out["metadata"] = metadata;
+    const std::vector<std::uint32_t> indices = rec.frame_indices();
+    out["first_frame"] = indices.empty() ? 0 : indices.front();
+    out["last_frame"] = indices.empty() ? 0 : indices.back();
+    nlohmann::ordered_json objects = nlohmann::ordered_json::array();
+    for (const recorder::ObjectInfo& object : rec.objects()) {
+        nlohmann::ordered_json topologies = nlohmann::ordered_json::array();
+        for (const recorder::TopologyInfo& t : object.topologies) {
+            topologies.push_back({{"from_frame", t.from_frame}, {"triangles", t.triangle_count}, {"vertices", t.vertex_count}});
+        }
+        objects.push_back({{"name", object.name}, {"topologies", topologies}});
+    }
+    out["objects"] = objects;
+    const std::vector<std::string> methods = rec.frame_methods();
+    std::map<std::string, std::uint64_t> frames_per_method;
+    std::uint64_t switches = 0;
+    for (std::size_t r = 0; r < methods.size(); ++r) {
+        ++frames_per_method[methods[r]];
+        if (r > 0 && methods[r] != methods[r - 1]) ++switches;
+    }
+    out["methods"] = frames_per_method;
+    out["method_switches"] = switches;
+    add_decisions(rec, out);
+    const std::vector<std::uint64_t> pair_counts = rec.pair_counts();
+    std::uint64_t total = 0, colliding_frames = 0, max_pairs = 0, max_frame = 0;
+    for (std::size_t r = 0; r < pair_counts.size(); ++r) {
+        total += pair_counts[r];
+        colliding_frames += pair_counts[r] > 0 ? 1 : 0;
+        if (pair_counts[r] > max_pairs) {
+            max_pairs = pair_counts[r];
+            max_frame = indices[r];
+        }
+    }
+    out["pairs"] = {{"total", total}, {"frames_with_collisions", colliding_frames}, {"max_per_frame", max_pairs},
+                    {"max_frame", max_frame}};
+    nlohmann::ordered_json stages = nlohmann::ordered_json::object();
+    for (const recorder::Series<double>& s : rec.stage_ms()) {
+        double sum = 0;
+        for (const double v : s.values) sum += v;
+        stages[s.name] = {{"median_ms", median(s.values)}, {"total_ms", sum}};
+    }
+    out["stages"] = stages;
+    std::error_code error;
+    out["file_bytes"] = std::filesystem::file_size(rec.path(), error);
+    std::map<std::string, std::uint64_t> by_group;
+    for (const std::string& path : rec.dataset_paths()) {
+        by_group[path.substr(0, path.find('/', 1))] += rec.storage_of(path);
+    }
+    out["bytes_by_group"] = by_group;
+    return out;
+}
+
+}  // namespace collidescope::app
