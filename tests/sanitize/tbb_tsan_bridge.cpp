@@ -20,16 +20,25 @@
 //    TSan cannot see. We interpose their entry points (our definitions come before libtbb's in
 //    the lookup order) and, around the real call found with dlsym(RTLD_NEXT), release the block
 //    when it is freed and acquire it when it is handed out again, as malloc and free do.
+// 3. A wait ends when libtbb sees the wait context's counter reach zero, through an acquire
+//    load TSan cannot see; the task that brought it to zero decremented it (an instrumented
+//    atomic in the headers) after its ITT "releasing". We interpose the two waits and, after
+//    the real one returns, load the counter again with acquire in instrumented code: the
+//    ordering libtbb relies on, now visible (without it, the next wait context built on the
+//    same stack slot looks like a race with that decrement).
 //
 // Races in our code, and races between our code and TBB's headers, are still reported.
 
 #include <oneapi/tbb/cache_aligned_allocator.h>
 #include <oneapi/tbb/detail/_small_object_pool.h>
+#include <oneapi/tbb/detail/_task.h>
 
 #include <sanitizer/tsan_interface.h>
 
 #include <dlfcn.h>
 
+#include <atomic>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 
@@ -71,9 +80,35 @@ Function* next_definition(const char* mangled_name) {
     return reinterpret_cast<Function*>(found);
 }
 
+// wait_context keeps its counter private: std::uint64_t m_version_and_traits, then
+// std::atomic<std::uint64_t> m_ref_count (oneTBB 2021, _task.h). The asserts stop the build if
+// that layout changes.
+void acquire_completion(tbb::detail::d1::wait_context& wait) {
+    static_assert(sizeof(tbb::detail::d1::wait_context) == 2 * sizeof(std::uint64_t));
+    static_assert(sizeof(std::atomic<std::uint64_t>) == sizeof(std::uint64_t));
+    auto* counter = reinterpret_cast<std::atomic<std::uint64_t>*>(reinterpret_cast<char*>(&wait) + sizeof(std::uint64_t));
+    (void)counter->load(std::memory_order_acquire);
+}
+
 }  // namespace
 
 namespace tbb::detail::r1 {
+
+BRIDGE_EXPORT void wait(d1::wait_context& wait_ctx, d1::task_group_context& ctx) {
+    using Real = void(d1::wait_context&, d1::task_group_context&);
+    static Real* real = next_definition<Real>("_ZN3tbb6detail2r14waitERNS0_2d112wait_contextERNS2_18task_group_contextE");
+    real(wait_ctx, ctx);
+    acquire_completion(wait_ctx);
+}
+
+BRIDGE_EXPORT void execute_and_wait(d1::task& task, d1::task_group_context& task_ctx, d1::wait_context& wait_ctx,
+                                    d1::task_group_context& wait_group) {
+    using Real = void(d1::task&, d1::task_group_context&, d1::wait_context&, d1::task_group_context&);
+    static Real* real = next_definition<Real>(
+        "_ZN3tbb6detail2r116execute_and_waitERNS0_2d14taskERNS2_18task_group_contextERNS2_12wait_contextES6_");
+    real(task, task_ctx, wait_ctx, wait_group);
+    acquire_completion(wait_ctx);
+}
 
 using d1::execution_data;
 using d1::small_object_pool;
