@@ -52,7 +52,7 @@ TEST(ReadmeCommands, CiRunsTheTestCommandVerbatim) {
 }
 
 TEST(ReadmeCommands, ScriptsAreExecutable) {
-    for (const char* script : {".ci/run", "scripts/setup.sh"}) {
+    for (const char* script : {".ci/run", "scripts/setup.sh", "scripts/sanitize.sh"}) {
         struct stat info {};
         ASSERT_EQ(::stat((k_source_dir / script).c_str(), &info), 0) << script;
         EXPECT_NE(info.st_mode & S_IXUSR, 0u) << script << " is not executable";

@@ -1,0 +1,35 @@
+// Built-in options of the address + undefined-behaviour sanitizer build, compiled into every
+// executable (tests/sanitize/sanitize.cmake), so that ctest and the app need no environment.
+// ASAN_OPTIONS, UBSAN_OPTIONS and LSAN_OPTIONS given at run time still override them.
+// docs/sanitizers.md explains each choice.
+
+extern "C" {
+
+// Leaks are findings (the default on Linux; said here so it stays so). Use-after-return is
+// checked too (our code hands spans over caller memory to worker threads), and so is the order
+// of dynamic initialisation across files (strict_init_order implies check_initialization_order).
+__attribute__((visibility("default"))) const char* __asan_default_options() {
+    return "detect_leaks=1:detect_stack_use_after_return=1:strict_init_order=1";
+}
+
+// -fno-sanitize-recover=all already stops at the first finding; this names where it came from.
+__attribute__((visibility("default"))) const char* __ubsan_default_options() {
+    return "print_stacktrace=1";
+}
+
+// One suppression, for Mesa's OSMesa (docs/sanitizers.md): it keeps a process-wide state
+// tracker manager (one 16-byte root) and the framebuffers OSMesaMakeCurrent creates for each
+// context (about 160 bytes per context) without ever freeing them, although we destroy every
+// context (gpucull/gl_context_osmesa.cpp, RAII). Mesa has no frame pointers, so the leak's
+// stack ends inside libOSMesa and the library is the narrowest handle LSan offers. A context
+// wrapper we forgot to destroy is still reported: its own allocation is ours.
+__attribute__((visibility("default"))) const char* __lsan_default_suppressions() {
+    return "leak:libOSMesa.so\n";
+}
+
+// Quiet about the suppression when it matched: the end-to-end tests read the app's stderr.
+__attribute__((visibility("default"))) const char* __lsan_default_options() {
+    return "print_suppressions=0";
+}
+
+}  // extern "C"

@@ -1,0 +1,31 @@
+// Built-in options and suppressions of the thread-sanitizer build, compiled into every
+// executable (tests/sanitize/sanitize.cmake), so that ctest and the app need no environment.
+// TSAN_OPTIONS given at run time still adds to or overrides them. docs/sanitizers.md explains
+// the two suppressions (both Mesa); TBB needs none (the bridge, tbb_tsan_bridge.cpp, makes it visible), and
+// none names our own code.
+
+extern "C" {
+
+__attribute__((visibility("default"))) const char* __tsan_default_options() {
+    return "second_deadlock_stack=1";
+}
+
+__attribute__((visibility("default"))) const char* __tsan_default_suppressions() {
+    return
+        // Mesa's llvmpipe (inside libOSMesa) runs its own rasteriser threads and orders them
+        // with futexes and atomics in uninstrumented code; only the pthread and libc calls it
+        // makes are intercepted, so TSan saw them as races among themselves (a mutex destroyed
+        // by the GL thread "racing" its lock on a rasteriser thread, every frame of the GPU
+        // methods). called_from_lib makes TSan ignore the interceptors Mesa calls; Mesa's own
+        // memory accesses were never checked, and our code's accesses still are.
+        "called_from_lib:libOSMesa.so\n"
+        // LLVM, which llvmpipe uses to compile its shaders, is uninstrumented too, and its
+        // object loader holds more than 64 mutexes at once: TSan's deadlock detector stops the
+        // process with "CHECK failed: sanitizer_deadlock_detector.h:67" (seen in
+        // HybridAndAdaptive.RandomScenesWithAndWithoutSelfCollision), and the mutex it takes in
+        // DynamicLibrary::getPermanentLibrary on each replay render thread looked like a race
+        // between those threads. Same mechanism, same reason.
+        "called_from_lib:libLLVM\n";
+}
+
+}  // extern "C"
