@@ -19,6 +19,10 @@ __attribute__((visibility("default"))) const char* __tsan_default_suppressions()
         // methods). called_from_lib makes TSan ignore the interceptors Mesa calls; Mesa's own
         // memory accesses were never checked, and our code's accesses still are.
         "called_from_lib:libOSMesa.so\n"
+        // The EGL backend (--gl egl) runs the same llvmpipe from Mesa's DRI driver
+        // (swrast_dri.so and its hard links, dlopened by libEGL_mesa): same reason. Added with
+        // the EGL backend by analogy; no TSan run has exercised it yet (docs/sanitizers.md).
+        "called_from_lib:_dri.so\n"
         // LLVM, which llvmpipe uses to compile its shaders, is uninstrumented too, and its
         // object loader holds more than 64 mutexes at once: TSan's deadlock detector stops the
         // process with "CHECK failed: sanitizer_deadlock_detector.h:67" (seen in
