@@ -134,7 +134,7 @@ main() {
       local target
       for target in $(targets_of "$2"); do merge_one "$target"; done
       ;;
-    *) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 2 ;;
+    *) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 2 ;;
   esac
 }
 
