@@ -4,12 +4,33 @@
 
 #include "support/scene_builders.hpp"
 
+#include "collidescope/error.hpp"
 #include "collidescope/recorder/recorder.hpp"
 
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
 namespace collidescope::testing {
+
+std::uint64_t frames_complete_now(const std::filesystem::path& file) {
+    try {
+        return recorder::Recording(file).frames_complete();
+    } catch (const InputError&) {
+        return 0;
+    }
+}
+
+void expect_complete_rows_equal(const recorder::Recording& part, const recorder::Recording& whole) {
+    const auto indices = part.frame_indices();
+    const auto whole_indices = whole.frame_indices();
+    for (std::uint64_t r = 0; r < part.frames_complete(); ++r) {
+        ASSERT_EQ(indices[r], whole_indices[r]);
+        EXPECT_EQ(part.pairs(r), whole.pairs(r)) << "frame row " << r;
+        for (std::uint32_t k = 0; k < part.objects().size(); ++k) {
+            EXPECT_EQ(part.positions(k, r), whole.positions(k, r)) << "object " << k << " row " << r;
+        }
+    }
+}
 namespace {
 
 class CaptureSink final : public TraceSink {

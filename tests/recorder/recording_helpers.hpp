@@ -3,6 +3,7 @@
 // reported, scenes for the tests, and editing a recording with HDF5 directly (to break it).
 
 #include "collidescope/pipeline.hpp"
+#include "collidescope/recorder/reader.hpp"
 #include "collidescope/scene.hpp"
 
 #include <cstdint>
@@ -11,6 +12,14 @@
 #include <vector>
 
 namespace collidescope::testing {
+
+/// Frames complete in `file` now, or 0 while it cannot be opened (yet): for polling a
+/// recording another process is writing.
+std::uint64_t frames_complete_now(const std::filesystem::path& file);
+
+/// Every complete row of `part` has the frame index, pairs and positions of the same row of
+/// `whole` (the uninterrupted recording of the same run).
+void expect_complete_rows_equal(const recorder::Recording& part, const recorder::Recording& whole);
 
 /// What the engine reported for one frame, copied.
 struct CapturedFrame {

@@ -45,15 +45,6 @@ pid_t spawn_record(const std::vector<std::string>& args) {
     return pid;
 }
 
-// Frames complete in `file` now, or 0 while it cannot be opened yet.
-std::uint64_t frames_now(const std::filesystem::path& file) {
-    try {
-        return recorder::Recording(file).frames_complete();
-    } catch (const InputError&) {
-        return 0;
-    }
-}
-
 // Kills the recording once at least `target` frames are complete; returns false when the
 // process ended on its own first.
 bool kill_after(pid_t pid, const std::filesystem::path& file, std::uint64_t target) {
@@ -61,7 +52,7 @@ bool kill_after(pid_t pid, const std::filesystem::path& file, std::uint64_t targ
     while (std::chrono::steady_clock::now() < deadline) {
         int status = 0;
         if (waitpid(pid, &status, WNOHANG) == pid) return false;
-        if (frames_now(file) >= target) {
+        if (testing::frames_complete_now(file) >= target) {
             kill(pid, SIGKILL);
             waitpid(pid, &status, 0);
             return WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
@@ -73,17 +64,12 @@ bool kill_after(pid_t pid, const std::filesystem::path& file, std::uint64_t targ
     return false;
 }
 
+// The complete rows equal the whole recording's, counts included.
 void expect_rows_equal(const recorder::Recording& killed, const recorder::Recording& whole) {
-    const auto indices = killed.frame_indices();
-    const auto whole_indices = whole.frame_indices();
+    testing::expect_complete_rows_equal(killed, whole);
     const auto counts = killed.counts();
     const auto whole_counts = whole.counts();
     for (std::uint64_t r = 0; r < killed.frames_complete(); ++r) {
-        ASSERT_EQ(indices[r], whole_indices[r]);
-        EXPECT_EQ(killed.pairs(r), whole.pairs(r)) << "frame row " << r;
-        for (std::uint32_t k = 0; k < killed.objects().size(); ++k) {
-            EXPECT_EQ(killed.positions(k, r), whole.positions(k, r)) << "object " << k << " row " << r;
-        }
         for (std::size_t c = 0; c < counts.size(); ++c) EXPECT_EQ(counts[c].values[r], whole_counts[c].values[r]);
     }
 }

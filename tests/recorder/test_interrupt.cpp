@@ -4,6 +4,8 @@
 // ignored, the way a full disk fails writes) stops it with one line naming the file and the
 // frame, exit 2, and leaves the frames before it intact in an unfinished (partial) file.
 
+#include "recording_helpers.hpp"
+
 #include "app/cli_runner.hpp"
 #include "mesh/temp_files.hpp"
 
@@ -32,12 +34,20 @@ using testing_files::TempDir;
 // lands well before the end.
 constexpr std::uint32_t k_frames = 60;
 
-std::uint64_t frames_now(const fs::path& file) {
-    try {
-        return recorder::Recording(file).frames_complete();
-    } catch (const InputError&) {
-        return 0;
-    }
+
+// The one line `record` prints when a write fails: "collidescope: error: FILE: frame N: ...
+// (REASON); the K frames before it are intact and the file is left unfinished (partial)".
+// False when `err` is not exactly that line; else the frame N and the count K.
+bool parse_write_failure(const std::string& err, const fs::path& file, const std::string& reason,
+                         std::uint64_t& failed_frame, std::uint64_t& intact) {
+    std::smatch match;
+    const std::regex line("^collidescope: error: " + file.string() + ": frame ([0-9]+): [^\n]*\\(" + reason +
+                          "\\); the ([0-9]+) frames before it are intact and the file is left unfinished "
+                          "\\(partial\\)\n$");
+    if (!std::regex_search(err, match, line)) return false;
+    failed_frame = std::stoull(match[1]);
+    intact = std::stoull(match[2]);
+    return true;
 }
 
 class RecordInterrupt : public ::testing::Test {
@@ -52,22 +62,13 @@ protected:
     }
     // Every complete row of `part` equals the same row of the uninterrupted recording.
     void expect_prefix_of_whole(const recorder::Recording& part) {
-        const recorder::Recording whole(m_dir / "whole.h5");
-        const auto indices = part.frame_indices();
-        const auto whole_indices = whole.frame_indices();
-        for (std::uint64_t r = 0; r < part.frames_complete(); ++r) {
-            ASSERT_EQ(indices[r], whole_indices[r]);
-            EXPECT_EQ(part.pairs(r), whole.pairs(r)) << "row " << r;
-            for (std::uint32_t k = 0; k < part.objects().size(); ++k) {
-                EXPECT_EQ(part.positions(k, r), whole.positions(k, r)) << "object " << k << " row " << r;
-            }
-        }
+        testing::expect_complete_rows_equal(part, recorder::Recording(m_dir / "whole.h5"));
     }
 
     void expect_graceful_stop(int signal, int exit_code, const std::string& name) {
         const fs::path file = m_dir / "stopped.h5";
         CliProcess process(args(file.string()), m_dir.path());
-        ASSERT_TRUE(process.wait_until([&] { return frames_now(file) >= 10; })) << process.err();
+        ASSERT_TRUE(process.wait_until([&] { return testing::frames_complete_now(file) >= 10; })) << process.err();
         process.send(signal);
         const CliResult result = process.wait();
         ASSERT_EQ(result.exit_code, exit_code) << result.err;
@@ -114,13 +115,8 @@ TEST_F(RecordInterrupt, WriteLimitNamesTheFileAndFrameAndKeepsTheFramesBefore) {
     EXPECT_EQ(result.exit_code, 2) << result.err;
     // "collidescope: error: FILE: frame 41: cannot reserve 1311608 bytes at byte 2840327 (File
     // too large); the 41 frames before it are intact and the file is left unfinished (partial)"
-    std::smatch match;
-    const std::regex line("^collidescope: error: " + file.string() +
-                          ": frame ([0-9]+): [^\n]*\\(File too large\\); the ([0-9]+) frames before it are intact "
-                          "and the file is left unfinished \\(partial\\)\n$");
-    ASSERT_TRUE(std::regex_search(result.err, match, line)) << result.err;
-    const std::uint64_t failed_frame = std::stoull(match[1]);
-    const std::uint64_t intact = std::stoull(match[2]);
+    std::uint64_t failed_frame = 0, intact = 0;
+    ASSERT_TRUE(parse_write_failure(result.err, file, "File too large", failed_frame, intact)) << result.err;
     EXPECT_EQ(failed_frame, intact);  // frames 0.. recorded, so frame N is the (N+1)th
     EXPECT_GT(intact, 0u);
     EXPECT_LT(intact, k_frames);
@@ -151,12 +147,8 @@ TEST_F(RecordInterrupt, FullTmpfsStopsWithTheFramesBeforeIntact) {
     run_args.push_back("-q");
     const CliResult result = testing::run_cli(run_args, m_dir.path());
     EXPECT_EQ(result.exit_code, 2) << result.err;
-    std::smatch match;
-    const std::regex line("^collidescope: error: " + file.string() +
-                          ": frame ([0-9]+): [^\n]*\\(No space left on device\\); the ([0-9]+) frames before it are "
-                          "intact and the file is left unfinished \\(partial\\)\n$");
-    ASSERT_TRUE(std::regex_search(result.err, match, line)) << result.err;
-    const std::uint64_t intact = std::stoull(match[2]);
+    std::uint64_t failed_frame = 0, intact = 0;
+    ASSERT_TRUE(parse_write_failure(result.err, file, "No space left on device", failed_frame, intact)) << result.err;
     EXPECT_GT(intact, 0u);
     const recorder::Recording full(file);
     EXPECT_FALSE(full.finished());

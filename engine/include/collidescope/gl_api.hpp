@@ -57,8 +57,12 @@ using GlProcLoader = void (*(*)(const char* name))();
 /// UnavailableError naming the first function the implementation does not have.
 GlApi load_gl_api(GlProcLoader loader, const char* implementation);
 
-/// The table of the context current on this thread (GlContext::make_current sets it).
-const GlApi*& current_gl_api();
+/// The table of the context current on this thread (GlContext::make_current sets it). Inline:
+/// every GL call reads it.
+inline const GlApi*& current_gl_api() {
+    thread_local const GlApi* current = nullptr;
+    return current;
+}
 
 /// Calls below go to the context current on this thread; calling GL with none is a bug.
 inline const GlApi& gl_api() {

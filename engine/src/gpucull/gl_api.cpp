@@ -1,4 +1,4 @@
-// Loading the GL entry points from a context's GetProcAddress; the per-thread current table.
+// Loading the GL entry points from a context's GetProcAddress.
 
 #include "collidescope/gl_api.hpp"
 
@@ -19,11 +19,6 @@ GlApi load_gl_api(GlProcLoader loader, const char* implementation) {
     COLLIDESCOPE_GL_FUNCTIONS(COLLIDESCOPE_GL_LOAD)
 #undef COLLIDESCOPE_GL_LOAD
     return api;
-}
-
-const GlApi*& current_gl_api() {
-    thread_local const GlApi* current = nullptr;
-    return current;
 }
 
 }  // namespace collidescope
