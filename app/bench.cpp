@@ -112,7 +112,8 @@ int run_bench(const BenchOptions& options) {
         plans.push_back({methods_for(options, scene, available), range.begin, range.end, options.repeat,
                          options.threads, scene.self_collision, gpu_config(options.gpu),
                          aabb_options(options.aabb)});
-        steps += std::uint64_t{range.end - range.begin} * static_cast<std::uint64_t>(options.repeat);
+        steps += std::uint64_t{range.end - range.begin} * static_cast<std::uint64_t>(options.repeat) *
+                 plans.back().methods.size();
         scenes.push_back(std::move(scene));
     }
 
@@ -164,7 +165,8 @@ Command add_bench_command(CLI::App& app) {
         "DIR/summary.csv (per scene and method: median and total ms, ratio to the fastest),\n"
         "DIR/time_<scene>_<preset>.svg (time per frame per method) and DIR/index.html; prints the\n"
         "summary table on stdout. Each frame's time is the median over --repeat runs of the whole\n"
-        "animation (fresh pipelines each run). Frames are generated before the clock starts.\n"
+        "animation (fresh pipelines each run; each method runs the animation alone, one method after\n"
+        "another). Frames are generated before the clock starts.\n"
         "Exit codes: 0 all methods returned the same pairs on every frame, 2 a mismatch or error.");
     command->add_option("--scenes", options->scenes, "Built-in scenes, NAME[:PRESET] (" +
                         builtin_scene_list() + ")")

@@ -121,8 +121,9 @@ void draw_mode_strips(std::ostringstream& svg, const Axes& axes, const BenchScen
         const std::pair<const char*, const char*> keys[] = {
             {"#9ecae1", "Mode 1 (AABB)"}, {"#74c476", "hybrid"}, {"#fd8d3c", "Mode 2 (GPU)"}};
         for (std::size_t k = 0; k < std::size(keys); ++k) {
-            svg << "<rect x=\"" << k_width - k_right + 12 << "\" y=\"" << y + 14.0 * k << "\" width=\"24\" height=\"7\" fill=\""
-                << keys[k].first << "\"/>\n<text x=\"" << k_width - k_right + 42 << "\" y=\"" << y + 14.0 * k + 7
+            const double key_y = y + 14.0 * static_cast<double>(k);
+            svg << "<rect x=\"" << k_width - k_right + 12 << "\" y=\"" << key_y << "\" width=\"24\" height=\"7\" fill=\""
+                << keys[k].first << "\"/>\n<text x=\"" << k_width - k_right + 42 << "\" y=\"" << key_y + 7
                 << "\" font-size=\"10\">" << keys[k].second << "</text>\n";
         }
     }

@@ -64,27 +64,29 @@ BenchScene run_bench_scene(const Scene& scene, const BenchPlan& plan,
     std::vector<std::vector<std::vector<double>>> hybrid(methods, std::vector<std::vector<double>>(frames));
     std::vector<std::vector<std::pair<std::uint8_t, std::uint8_t>>> modes(methods, std::vector<std::pair<std::uint8_t, std::uint8_t>>(frames, {0, 255}));
 
+    // Method by method, each running the whole animation alone: a method's background work
+    // (the AABB rebuild on its worker thread) must never run inside another method's timed
+    // frame. Interleaving the methods frame by frame did that: whichever method came second
+    // paid for the first one's rebuild, 8-14% of its total on E (docs/datasets.md, "bench").
+    std::vector<std::vector<TrianglePair>> reference(frames);  // the first method's, first run
     for (int rep = 0; rep < plan.repeat; ++rep) {
-        // Fresh pipelines each repeat: methods keep state (trees, GPU state) across frames.
-        std::vector<std::unique_ptr<Pipeline>> pipelines;
-        for (const std::string& method : plan.methods) {
+        for (std::size_t m = 0; m < methods; ++m) {
+            // A fresh pipeline each run (methods keep trees and GPU state across frames),
+            // destroyed, its worker joined, before the next method starts.
             PipelineConfig config;
-            config.method = method;
+            config.method = plan.methods[m];
             config.self_collision = plan.self_collision;
             config.threads = plan.threads;
             config.gpu = plan.gpu;
             config.aabb = plan.aabb;
             config.adaptive = plan.adaptive;
-            pipelines.push_back(std::make_unique<Pipeline>(config));
-        }
-        for (std::uint32_t f = 0; f < frames; ++f) {
-            const Frame frame = scene.source->frame(plan.begin + f);
-            if (rep == 0 && f == 0) {
-                for (const ObjectFrame& object : frame.objects) result.triangles += object.triangle_count();
-            }
-            std::vector<TrianglePair> reference;
-            for (std::size_t m = 0; m < methods; ++m) {
-                FrameResult frame_result = pipelines[m]->process(frame);
+            Pipeline pipeline(config);
+            for (std::uint32_t f = 0; f < frames; ++f) {
+                const Frame frame = scene.source->frame(plan.begin + f);
+                if (rep == 0 && m == 0 && f == 0) {
+                    for (const ObjectFrame& object : frame.objects) result.triangles += object.triangle_count();
+                }
+                FrameResult frame_result = pipeline.process(frame);
                 samples[m][f].push_back(stage_values(frame_result.stats.ms));
                 if (rep == 0) counts[m][f] = count_values(frame_result.stats.counts);
                 if (rep == 0 && frame_result.stats.hybrid) {
@@ -94,19 +96,19 @@ BenchScene run_bench_scene(const Scene& scene, const BenchPlan& plan,
                 if (rep == 0 && frame_result.stats.decision) {
                     modes[m][f] = {frame_result.stats.decision->mode, frame_result.stats.decision->action};
                 }
-                if (m == 0) {
-                    reference = std::move(frame_result.colliding_pairs);
-                    continue;
+                if (rep == 0 && m == 0) {
+                    reference[f] = std::move(frame_result.colliding_pairs);
+                } else {
+                    BenchMismatch mismatch = compare_pair_lists(reference[f], frame_result.colliding_pairs);
+                    if (mismatch.missing + mismatch.extra > 0) {  // any repeat: a flaky method is wrong too
+                        mismatch.frame = plan.begin + f;
+                        mismatch.method = plan.methods[m];
+                        mismatch.reference = plan.methods[0];
+                        result.mismatches.push_back(mismatch);
+                    }
                 }
-                BenchMismatch mismatch = compare_pair_lists(reference, frame_result.colliding_pairs);
-                if (mismatch.missing + mismatch.extra > 0) {  // any repeat: a flaky method is wrong too
-                    mismatch.frame = plan.begin + f;
-                    mismatch.method = plan.methods[m];
-                    mismatch.reference = plan.methods[0];
-                    result.mismatches.push_back(mismatch);
-                }
+                on_step();
             }
-            on_step();
         }
     }
 

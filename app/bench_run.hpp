@@ -68,9 +68,11 @@ struct BenchScene {
 BenchMismatch compare_pair_lists(const std::vector<TrianglePair>& reference,
                                  const std::vector<TrianglePair>& pairs);
 
-/// Runs the plan on `scene`. Frames are produced before the clock starts (frame generation or
-/// import is not measured: ms.total covers the pipeline only). `on_step` is called after
-/// every frame of every repeat (for a progress bar).
+/// Runs the plan on `scene`: per repeat, each method in turn runs every frame with a fresh
+/// pipeline, alone (no other method's pipeline exists meanwhile). Frames are produced before
+/// the clock starts (frame generation or import is not measured: ms.total covers the
+/// pipeline only). `on_step` is called after every frame of every method and repeat (for a
+/// progress bar).
 BenchScene run_bench_scene(const Scene& scene, const BenchPlan& plan,
                            const std::function<void()>& on_step);
 

@@ -143,5 +143,38 @@ TEST(Bench, ComparePairListsCountsMissingAndExtra) {
     EXPECT_EQ(same.missing + same.extra, 0u);
 }
 
+TEST(Bench, RunsEachMethodAloneOverEveryFrameAndRepeat) {
+    MAKE_SCENE_OR_SKIP(scene, "C:small");
+    app::BenchPlan plan;
+    plan.methods = {"brute", "aabb", "aabb-thesis"};
+    plan.begin = 2;
+    plan.end = 6;
+    plan.repeat = 2;
+    plan.threads = 2;
+    plan.self_collision = scene.self_collision;
+    int steps = 0;
+    const app::BenchScene result = app::run_bench_scene(scene, plan, [&] { ++steps; });
+    EXPECT_EQ(steps, 3 * 4 * 2);  // methods x frames x repeats, one progress step each
+    EXPECT_TRUE(result.mismatches.empty());
+    ASSERT_EQ(result.frames.size(), 3u * 4u);  // method-major, medians over the repeats
+    for (std::size_t i = 0; i < result.frames.size(); ++i) {
+        EXPECT_EQ(result.frames[i].method, plan.methods[i / 4]);
+        EXPECT_EQ(result.frames[i].frame, plan.begin + i % 4);
+    }
+    // The same colliding pairs counted by every method on each frame, some on at least one.
+    std::size_t colliding = 0;
+    std::size_t k = 0;
+    for_each_count(FrameCounts{}, [&](const char* name, std::uint64_t) {
+        if (std::string(name) == "colliding_pairs") colliding = k;
+        ++k;
+    });
+    std::uint64_t total = 0;
+    for (std::size_t i = 4; i < result.frames.size(); ++i) {
+        EXPECT_EQ(result.frames[i].counts[colliding], result.frames[i % 4].counts[colliding]) << i;
+    }
+    for (std::size_t f = 0; f < 4; ++f) total += result.frames[f].counts[colliding];
+    EXPECT_GT(total, 0u);
+}
+
 }  // namespace
 }  // namespace collidescope
