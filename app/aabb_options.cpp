@@ -28,8 +28,9 @@ void add_aabb_options(CLI::App& command, AabbCliOptions& options) {
         ->capture_default_str()
         ->group(group);
     command.add_option("--background-rebuild", options.background,
-                       "Policy rebuilds on a worker thread while frames use the refit tree: on or off")
-        ->check(CLI::IsMember({"on", "off"}))
+                       "Policy rebuilds on a worker thread while frames use the refit tree: on, off, or auto "
+                       "(on only when --threads leaves a hardware thread free for the worker)")
+        ->check(CLI::IsMember({"auto", "on", "off"}))
         ->capture_default_str()
         ->group(group);
 }
@@ -42,7 +43,9 @@ AabbOptions aabb_options(const AabbCliOptions& options) {
                                                   : AabbRebuildRule::Quality;
     result.quality_limit = options.quality_limit;
     result.thesis_fraction = options.thesis_fraction;
-    result.background = options.background == "on";
+    result.background = options.background == "on"    ? AabbBackground::On
+                        : options.background == "off" ? AabbBackground::Off
+                                                      : AabbBackground::Auto;
     return result;
 }
 

@@ -17,7 +17,7 @@ struct AabbCliOptions {
     std::string rebuild = "quality";  ///< quality | thesis | never
     double quality_limit = AabbOptions{}.quality_limit;
     double thesis_fraction = AabbOptions{}.thesis_fraction;
-    std::string background = "on";  ///< on | off
+    std::string background = "auto";  ///< auto | on | off
 };
 
 /// Adds the options to `command`, writing into `options` (which must outlive parsing).

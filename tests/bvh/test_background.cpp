@@ -13,7 +13,9 @@
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
+#include <tbb/info.h>
 
+#include <cstdio>
 #include <random>
 
 namespace collidescope::bvh {
@@ -142,6 +144,25 @@ TEST(AabbDeterminism, SameCountsForEveryThreadCount) {
             EXPECT_EQ(runs[k].stats[f].aabb->tree_quality, runs[0].stats[f].aabb->tree_quality);
         }
     }
+}
+
+TEST(BackgroundRebuild, AutoUsesTheWorkerOnlyWhenAHardwareThreadIsFree) {
+    const int hardware = tbb::info::default_concurrency();
+    std::printf("TBB default concurrency here: %d\n", hardware);
+    EXPECT_FALSE(rebuild_in_background(AabbBackground::Auto, 0));  // 0 = all hardware threads
+    EXPECT_FALSE(rebuild_in_background(AabbBackground::Auto, hardware));
+    EXPECT_FALSE(rebuild_in_background(AabbBackground::Auto, hardware + 4));
+    EXPECT_EQ(rebuild_in_background(AabbBackground::Auto, 1), hardware > 1);
+    EXPECT_EQ(rebuild_in_background(AabbBackground::Auto, hardware - 1), hardware > 1);
+    for (int threads : {0, 1, hardware, hardware + 4}) {
+        EXPECT_TRUE(rebuild_in_background(AabbBackground::On, threads));
+        EXPECT_FALSE(rebuild_in_background(AabbBackground::Off, threads));
+    }
+    AabbOptions options;
+    EXPECT_EQ(options.background, AabbBackground::Auto);
+    EXPECT_EQ(aabb_config(options, 0).background, BackgroundMode::Off);
+    options.background = AabbBackground::On;
+    EXPECT_EQ(aabb_config(options, 0).background, BackgroundMode::Async);
 }
 
 }  // namespace

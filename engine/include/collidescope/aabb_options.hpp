@@ -19,12 +19,23 @@ enum class AabbRebuildRule : std::uint8_t {
     Never,    ///< refit only
 };
 
+/// Where the rebuild policy's rebuilds run (a topology change or a missing tree is always built
+/// inside the frame).
+enum class AabbBackground : std::uint8_t {
+    /// On a worker only when the frames' worker threads leave a hardware thread free for it
+    /// (--threads below the machine's); else inside the frame. On 2 cores with both busy, a
+    /// frame traversing while the worker builds took 2-3x its time (docs/decision.md).
+    Auto,
+    On,   ///< on a worker thread while frames use the refit tree (thesis contribution 3)
+    Off,  ///< inside the frame, on the engine thread and its workers
+};
+
 struct AabbOptions {
     AabbBuilder builder = AabbBuilder::Lbvh;
     AabbRebuildRule rebuild = AabbRebuildRule::Quality;
     double quality_limit = 1.5;     ///< quality rule threshold (relative SAH cost)
     double thesis_fraction = 0.75;  ///< thesis rule: "three fourths of a rebuild"
-    bool background = true;         ///< policy rebuilds on a worker thread (thesis contribution 3)
+    AabbBackground background = AabbBackground::Auto;
 };
 
 }  // namespace collidescope

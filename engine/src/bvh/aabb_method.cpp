@@ -5,6 +5,8 @@
 #include "bvh/object_trees.hpp"
 #include "pipeline/narrow_phase.hpp"
 
+#include <tbb/info.h>
+
 #include <algorithm>
 #include <chrono>
 
@@ -136,7 +138,12 @@ std::unique_ptr<Method> make_aabb_method(AabbConfig config) {
     return std::make_unique<AabbMethod>(std::move(config));
 }
 
-AabbConfig aabb_config(const AabbOptions& options) {
+bool rebuild_in_background(AabbBackground mode, int threads) {
+    if (mode != AabbBackground::Auto) return mode == AabbBackground::On;
+    return threads > 0 && threads < tbb::info::default_concurrency();
+}
+
+AabbConfig aabb_config(const AabbOptions& options, int threads) {
     AabbConfig config;
     config.build.builder = options.builder == AabbBuilder::Sah ? Builder::Sah : Builder::Lbvh;
     config.policy.rule = options.rebuild == AabbRebuildRule::Thesis  ? RebuildRule::Thesis
@@ -144,7 +151,7 @@ AabbConfig aabb_config(const AabbOptions& options) {
                                                                      : RebuildRule::Quality;
     config.policy.quality_limit = options.quality_limit;
     config.policy.thesis_fraction = options.thesis_fraction;
-    config.background = options.background ? BackgroundMode::Async : BackgroundMode::Off;
+    config.background = rebuild_in_background(options.background, threads) ? BackgroundMode::Async : BackgroundMode::Off;
     return config;
 }
 
@@ -154,8 +161,8 @@ namespace collidescope {
 
 std::unique_ptr<Method> make_aabb_method() { return bvh::make_aabb_method(bvh::AabbConfig{}); }
 
-std::unique_ptr<Method> make_aabb_method(const AabbOptions& options) {
-    return bvh::make_aabb_method(bvh::aabb_config(options));
+std::unique_ptr<Method> make_aabb_method(const AabbOptions& options, int threads) {
+    return bvh::make_aabb_method(bvh::aabb_config(options, threads));
 }
 
 }  // namespace collidescope

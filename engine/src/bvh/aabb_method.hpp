@@ -101,8 +101,14 @@ private:
 /// Makes the `aabb` method.
 std::unique_ptr<Method> make_aabb_method(AabbConfig config);
 
-/// The configuration that `options` (the command line's, through PipelineConfig) describe.
-AabbConfig aabb_config(const AabbOptions& options);
+/// Whether rebuilds run on the worker thread under `mode` when frames use `threads` worker
+/// threads (PipelineConfig::threads, 0 = all): AabbBackground::Auto is on only below TBB's
+/// default concurrency (the hardware threads this process may use).
+bool rebuild_in_background(AabbBackground mode, int threads);
+
+/// The configuration that `options` (the command line's, through PipelineConfig) describe,
+/// for frames on `threads` worker threads (0 = all).
+AabbConfig aabb_config(const AabbOptions& options, int threads);
 
 }  // namespace collidescope::bvh
 
@@ -111,6 +117,6 @@ namespace collidescope {
 /// Makes the `aabb` method with the default configuration.
 std::unique_ptr<Method> make_aabb_method();
 /// Makes the `aabb` method as `options` say (the registry's entry).
-std::unique_ptr<Method> make_aabb_method(const AabbOptions& options);
+std::unique_ptr<Method> make_aabb_method(const AabbOptions& options, int threads);
 
 }  // namespace collidescope

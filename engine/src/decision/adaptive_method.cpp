@@ -51,8 +51,8 @@ std::uint64_t pcs_triangles(const FrameContext& context) {
 
 // The AABB trees' configuration, on the adaptive method's clock (so that a scripted clock
 // scripts the rebuild times the policy sees too).
-bvh::AabbConfig culler_config(const AabbOptions& options, const std::function<double()>& clock) {
-    bvh::AabbConfig config = bvh::aabb_config(options);
+bvh::AabbConfig culler_config(const PipelineConfig& pipeline, const std::function<double()>& clock) {
+    bvh::AabbConfig config = bvh::aabb_config(pipeline.aabb, pipeline.threads);
     config.clock_ms = clock;
     return config;
 }
@@ -61,7 +61,7 @@ class AdaptiveMethod final : public Method {
 public:
     AdaptiveMethod(const PipelineConfig& config, AdaptiveParts parts)
         : m_clock(parts.clock_ms ? std::move(parts.clock_ms) : std::function<double()>(&steady_ms)),
-          m_culler(std::make_shared<bvh::AabbCuller>(culler_config(config.aabb, m_clock))),
+          m_culler(std::make_shared<bvh::AabbCuller>(culler_config(config, m_clock))),
           m_aabb(std::make_unique<SharedAabbMethod>(m_culler)) {
         if (!parts.without_gpu) make_gpu_methods(config);
         if (!parts.uniform) {
@@ -186,7 +186,7 @@ std::unique_ptr<Method> make_adaptive_method(const PipelineConfig& config, Adapt
 }
 
 std::unique_ptr<Method> make_hybrid_method(const PipelineConfig& config) {
-    return hybrid::make_hybrid_method(std::make_shared<bvh::AabbCuller>(bvh::aabb_config(config.aabb)), config.gpu);
+    return hybrid::make_hybrid_method(std::make_shared<bvh::AabbCuller>(bvh::aabb_config(config.aabb, config.threads)), config.gpu);
 }
 
 }  // namespace collidescope::decision

@@ -34,7 +34,7 @@ struct MethodEntry {
 // In the order method_names() lists them.
 constexpr MethodEntry k_methods[] = {
     {"brute", [](const PipelineConfig&) { return make_brute_method(); }},
-    {"aabb", [](const PipelineConfig& config) { return make_aabb_method(config.aabb); }},
+    {"aabb", [](const PipelineConfig& config) { return make_aabb_method(config.aabb, config.threads); }},
     {"gpu", [](const PipelineConfig& config) { return make_gpu_method(config.gpu); }},
     {"gpu-naive", [](const PipelineConfig& config) {
          GpuCullConfig naive = config.gpu;
@@ -44,7 +44,7 @@ constexpr MethodEntry k_methods[] = {
     {"aabb-thesis", [](const PipelineConfig& config) -> std::unique_ptr<Method> {  // the thesis's AABB baseline: 5.2.1's 3/4 rule
          AabbOptions thesis = config.aabb;
          thesis.rebuild = AabbRebuildRule::Thesis;
-         return std::make_unique<NamedMethod>("aabb-thesis", make_aabb_method(thesis));
+         return std::make_unique<NamedMethod>("aabb-thesis", make_aabb_method(thesis, config.threads));
      }},
     {"hybrid", [](const PipelineConfig& config) { return decision::make_hybrid_method(config); }},
     {"adaptive", [](const PipelineConfig& config) { return decision::make_adaptive_method(config); }},
