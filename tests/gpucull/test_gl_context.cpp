@@ -88,7 +88,7 @@ TEST_P(EachBackend, CullGivesTheOsmesaPcsAndTheBrutePairs) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, EachBackend, ::testing::Values(GlBackend::Osmesa, GlBackend::Egl),
-                         [](const auto& info) { return std::string(gl_backend_name(info.param)); });
+                         [](const auto& param_info) { return std::string(gl_backend_name(param_info.param)); });
 
 // OSMesa and EGL export the same GL symbols; each thread must reach its own context's.
 TEST(GlContexts, BothKindsOnSeveralThreadsAtOnce) {

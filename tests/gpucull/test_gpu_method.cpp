@@ -178,8 +178,12 @@ TEST(GpuCull, NaiveAndEveryMechanismSwitchStayExact) {
         for (std::size_t i = 0; i < pipelines.size(); ++i) {
             const FrameResult result = pipelines[i]->process(frame);
             ASSERT_EQ(result.colliding_pairs, expected) << "config " << i << " frame " << f;
-            if (i == 0) EXPECT_EQ(result.stats.method, "gpu-naive");
-            if (i == 0 && result.stats.gpu->triangles_per_query != 0) EXPECT_EQ(result.stats.gpu->triangles_per_query, 1u);
+            if (i == 0) {
+                EXPECT_EQ(result.stats.method, "gpu-naive");
+            }
+            if (i == 0 && result.stats.gpu->triangles_per_query != 0) {
+                EXPECT_EQ(result.stats.gpu->triangles_per_query, 1u);
+            }
         }
     }
 }

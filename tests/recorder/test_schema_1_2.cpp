@@ -247,7 +247,9 @@ TEST(Schema12, GpuMethodRecordingMatchesItsReports) {
         expect_passes_equal(rec.gpu_passes(r), stats.gpu->passes, r);
         EXPECT_EQ(rec.survivors(r), stats.gpu->survivors) << "row " << r;
         expect_depth_equal(rec.depth_images(r), stats.gpu->depth_images, r);
-        if (stats.frame % 2 != 0) EXPECT_TRUE(stats.gpu->depth_images.empty()) << "frame " << stats.frame;
+        if (stats.frame % 2 != 0) {
+            EXPECT_TRUE(stats.gpu->depth_images.empty()) << "frame " << stats.frame;
+        }
         images += stats.gpu->depth_images.size();
     }
     EXPECT_GT(images, 0u);

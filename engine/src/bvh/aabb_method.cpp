@@ -132,7 +132,10 @@ bool AabbCuller::start_rebuild(const Frame& frame, AabbFrameInfo& info) {
 
 bool AabbCuller::rebuild_in_flight() const { return m_trees->rebuild_in_flight(); }
 
-bool AabbCuller::rebuild_finished() const { return m_trees->rebuild_finished(); }
+bool AabbCuller::rebuild_finished() const {
+    if (m_config.background == BackgroundMode::NextFrame) return m_trees->rebuild_in_flight();
+    return m_trees->rebuild_finished();
+}
 
 std::unique_ptr<Method> make_aabb_method(AabbConfig config) {
     return std::make_unique<AabbMethod>(std::move(config));

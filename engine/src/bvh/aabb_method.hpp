@@ -83,7 +83,9 @@ public:
     bool start_rebuild(const Frame& frame, AabbFrameInfo& info);
     /// A worker rebuild is running, or finished and not yet swapped in.
     bool rebuild_in_flight() const;
-    /// A worker rebuild finished and waits to be swapped in by the next cull().
+    /// A worker rebuild finished and waits to be swapped in by the next cull(). Under
+    /// BackgroundMode::NextFrame, any rebuild in flight counts as finished (the next cull()
+    /// joins it), so that the answer does not depend on the worker's speed.
     bool rebuild_finished() const;
     /// The objects the last cull() used.
     const std::vector<std::uint32_t>& used() const { return m_used; }

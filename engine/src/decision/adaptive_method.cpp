@@ -51,9 +51,11 @@ std::uint64_t pcs_triangles(const FrameContext& context) {
 
 // The AABB trees' configuration, on the adaptive method's clock (so that a scripted clock
 // scripts the rebuild times the policy sees too).
-bvh::AabbConfig culler_config(const PipelineConfig& pipeline, const std::function<double()>& clock) {
+bvh::AabbConfig culler_config(const PipelineConfig& pipeline, const std::function<double()>& clock,
+                               bool join_next_frame) {
     bvh::AabbConfig config = bvh::aabb_config(pipeline.aabb, pipeline.threads);
     config.clock_ms = clock;
+    if (join_next_frame) config.background = bvh::BackgroundMode::NextFrame;
     return config;
 }
 
@@ -61,7 +63,7 @@ class AdaptiveMethod final : public Method {
 public:
     AdaptiveMethod(const PipelineConfig& config, AdaptiveParts parts)
         : m_clock(parts.clock_ms ? std::move(parts.clock_ms) : std::function<double()>(&steady_ms)),
-          m_culler(std::make_shared<bvh::AabbCuller>(culler_config(config, m_clock))),
+          m_culler(std::make_shared<bvh::AabbCuller>(culler_config(config, m_clock, parts.join_rebuilds_next_frame))),
           m_aabb(std::make_unique<SharedAabbMethod>(m_culler)) {
         if (!parts.without_gpu) make_gpu_methods(config);
         if (!parts.uniform) {

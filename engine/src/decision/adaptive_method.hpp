@@ -27,6 +27,10 @@ struct AdaptiveParts {
     std::function<std::unique_ptr<Policy>()> policy;
     /// Pretend no GL context can be made (tests of the unavailable path).
     bool without_gpu = false;
+    /// Join worker rebuilds at the next frame (bvh::BackgroundMode::NextFrame), so that what
+    /// the policy learns of a rebuild in a thread does not depend on the worker's real speed
+    /// (tests with a scripted clock: a long run must repeat decision for decision).
+    bool join_rebuilds_next_frame = false;
 };
 
 /// Makes the `adaptive` method. Without a GL context it runs AABB only and says so in the
