@@ -7,12 +7,27 @@
 #include "collidescope/stats.hpp"
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <ctime>
 #include <thread>
 
 namespace collidescope::recorder {
 namespace {
+
+// HDF5 1.10 locks the file while a process opens it. A reader that opens the recording at
+// the moment `record` switches it to SWMR writing, or reopens it to mark it finished (a
+// script or `inspect` polling it), makes that call fail although nothing is wrong; the
+// reader's lock lasts as long as its open. So those two calls are retried for up to 5 s.
+template <class Call>
+auto retry_while_locked(Call call) {
+    auto result = call();
+    for (int attempt = 1; result < 0 && attempt < 250; ++attempt) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        result = call();
+    }
+    return result;
+}
 
 constexpr hsize_t k_frame_chunk = 256;       // rows per chunk of 1-D per-frame datasets (2 KiB)
 constexpr hsize_t k_pair_chunk = 8192;       // pairs per chunk (128 KiB)
@@ -51,7 +66,8 @@ TraceFile::TraceFile(const std::filesystem::path& path, const SessionInfo& sessi
     create_frames(methods);
     create_details();
     create_objects(session, first, deflate_level);
-    m_where.check(H5Fstart_swmr_write(m_file.get()), "cannot start SWMR writing");
+    m_where.check(retry_while_locked([&] { return H5Fstart_swmr_write(m_file.get()); }),
+                  "cannot start SWMR writing (another process kept the file open for 5 s?)");
     m_reserve = std::make_unique<SpaceReserve>(path);
 }
 
@@ -254,8 +270,9 @@ void TraceFile::close() {
 void TraceFile::mark_finished(const std::filesystem::path& path, std::uint64_t frames, std::uint32_t positions_stride,
                               const std::string& interrupted) {
     const h5::Where where(path.string());
-    const h5::Id file = where.own(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose,
-                                  "cannot reopen the recording to mark it finished");
+    const h5::Id file = where.own(retry_while_locked([&] { return H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT); }),
+                                  H5Fclose,
+                                  "cannot reopen the recording to mark it finished (another process kept it open for 5 s?)");
     h5::write_attr(where, file.get(), schema::k_attr_frames_recorded, static_cast<std::int64_t>(frames));
     h5::write_attr(where, file.get(), schema::k_attr_positions_stride, std::int64_t{positions_stride});
     if (!interrupted.empty()) h5::write_attr(where, file.get(), schema::k_attr_interrupted, interrupted);
