@@ -33,11 +33,6 @@ std::string fixed(double value, int digits) {
     return text;
 }
 
-std::size_t count_index(const std::string& name) {
-    const std::vector<std::string> names = count_names();
-    return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
-}
-
 BenchSummary summarize_method(const BenchScene& scene, const std::string& method) {
     BenchSummary row{scene.name, scene.preset, method};
     std::vector<double> totals;

@@ -34,6 +34,12 @@ using Samples = std::vector<std::vector<std::vector<std::vector<double>>>>;  // 
 
 }  // namespace
 
+std::size_t count_index(const std::string& name) {
+    std::vector<std::string> names;
+    for_each_count(FrameCounts{}, [&](const char* count, std::uint64_t) { names.emplace_back(count); });
+    return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+}
+
 BenchMismatch compare_pair_lists(const std::vector<TrianglePair>& reference,
                                  const std::vector<TrianglePair>& pairs) {
     BenchMismatch mismatch;

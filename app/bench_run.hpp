@@ -63,6 +63,9 @@ struct BenchScene {
     std::uint64_t triangles = 0;     ///< in the first frame, all objects
 };
 
+/// The position of the count `name` (e.g. "colliding_pairs") in BenchFrame::counts.
+std::size_t count_index(const std::string& name);
+
 /// Counts the pairs in `reference` but not in `pairs` (missing) and the reverse (extra); both
 /// lists sorted and unique, as the pipeline returns them.
 BenchMismatch compare_pair_lists(const std::vector<TrianglePair>& reference,

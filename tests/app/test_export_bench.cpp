@@ -162,12 +162,7 @@ TEST(Bench, RunsEachMethodAloneOverEveryFrameAndRepeat) {
         EXPECT_EQ(result.frames[i].frame, plan.begin + i % 4);
     }
     // The same colliding pairs counted by every method on each frame, some on at least one.
-    std::size_t colliding = 0;
-    std::size_t k = 0;
-    for_each_count(FrameCounts{}, [&](const char* name, std::uint64_t) {
-        if (std::string(name) == "colliding_pairs") colliding = k;
-        ++k;
-    });
+    const std::size_t colliding = app::count_index("colliding_pairs");
     std::uint64_t total = 0;
     for (std::size_t i = 4; i < result.frames.size(); ++i) {
         EXPECT_EQ(result.frames[i].counts[colliding], result.frames[i % 4].counts[colliding]) << i;

@@ -34,7 +34,6 @@ using testing_files::TempDir;
 // lands well before the end.
 constexpr std::uint32_t k_frames = 60;
 
-
 // The one line `record` prints when a write fails: "collidescope: error: FILE: frame N: ...
 // (REASON); the K frames before it are intact and the file is left unfinished (partial)".
 // False when `err` is not exactly that line; else the frame N and the count K.
