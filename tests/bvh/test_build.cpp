@@ -135,6 +135,10 @@ TEST(BvhValidator, ReportsCorruptions) {
     EXPECT_TRUE(broken([](Tree& t) { t.nodes[0].index = 1; }));                           // bad child index
     EXPECT_TRUE(broken([](Tree& t) { t.nodes.pop_back(); }));                             // counts
     EXPECT_TRUE(broken([](Tree& t) { t.refit_plan.top.push_back(0); }));                  // plan overlap
+    EXPECT_TRUE(broken([](Tree& t) { t.refit_plan.leaf_ends[0] ^= 1; }));                 // leaf end moved
+    EXPECT_TRUE(broken([](Tree& t) { std::swap(t.refit_plan.leaves[0], t.refit_plan.leaves[1]); }));  // leaf order
+    EXPECT_TRUE(broken([](Tree& t) { t.refit_plan.inner.pop_back(); }));                  // inner node missing
+    EXPECT_TRUE(broken([](Tree& t) { t.refit_plan.subtrees[0].slot_end -= 1; }));         // slots short
     EXPECT_TRUE(broken([](Tree& t) { t.nodes[1].box.lo[0] -= 1; t.nodes[0].box.lo[0] -= 1; }));  // not tight
     // Moving a vertex without a refit: the leaf no longer contains its triangle.
     std::vector<Vec3> moved = mesh.vertices;

@@ -72,12 +72,39 @@ std::vector<Node> to_preorder(const detail::RawTree& raw) {
 void plan_range(const Tree& tree, NodeRange range, std::uint32_t grain, RefitPlan& plan) {
     const Node& node = tree.nodes[range.root];
     if (node.is_leaf() || range.end - range.root <= grain) {
-        plan.subtrees.push_back(range);
+        plan.subtrees.push_back({range});
         return;
     }
     plan.top.push_back(range.root);
     plan_range(tree, {range.root + 1, node.index}, grain, plan);
     plan_range(tree, {node.index, range.end}, grain, plan);
+}
+
+// The refit plan: the cut, then each subtree's leaves, slots and inner nodes. Subtrees come
+// left to right, so their leaves, and so their slots, follow each other.
+RefitPlan plan_refit(const Tree& tree, std::uint32_t grain) {
+    RefitPlan plan;
+    plan_range(tree, {0, static_cast<std::uint32_t>(tree.nodes.size())}, grain, plan);
+    plan.leaf_ends.assign(tree.leaf_triangles.size(), 0);
+    std::uint32_t slot = 0;
+    for (RefitSubtree& subtree : plan.subtrees) {
+        subtree.slot_begin = slot;
+        subtree.leaf_begin = static_cast<std::uint32_t>(plan.leaves.size());
+        subtree.inner_begin = static_cast<std::uint32_t>(plan.inner.size());
+        for (std::uint32_t i = subtree.nodes.root; i < subtree.nodes.end; ++i) {
+            const Node& node = tree.nodes[i];
+            if (node.is_leaf()) {
+                plan.leaves.push_back(i);
+                slot = node.index + node.count;
+                plan.leaf_ends[slot - 1] = 1;
+            } else {
+                plan.inner.push_back(i);
+            }
+        }
+        subtree.slot_end = slot;
+        subtree.inner_end = static_cast<std::uint32_t>(plan.inner.size());
+    }
+    return plan;
 }
 
 std::uint32_t depth_below(const Tree& tree, std::uint32_t node) {
@@ -113,8 +140,7 @@ BuildStats build_tree(std::span<const TriIndices> triangles, std::span<const Vec
     tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 8192), [&](const tbb::blocked_range<std::uint32_t>& r) {
         for (std::uint32_t k = r.begin(); k != r.end(); ++k) tree.leaf_triangles[k] = triangles[tree.triangle_ids[k]];
     });
-    plan_range(tree, {0, static_cast<std::uint32_t>(tree.nodes.size())}, std::max(config.refit_grain, 1u),
-               tree.refit_plan);
+    tree.refit_plan = plan_refit(tree, std::max(config.refit_grain, 1u));
     const RefitStats fitted = refit(tree, triangles, vertices);
     tree.built_cost = fitted.sah_cost;
     stats.nodes = static_cast<std::uint32_t>(tree.nodes.size());

@@ -96,11 +96,27 @@ struct NodeRange {
     std::uint32_t end = 0;
 };
 
+/// One parallel unit of refit: the subtree `nodes` (a preorder range), with what refit walks
+/// in it without branching on the tree's shape: its triangle slots [slot_begin, slot_end),
+/// whose leaves are RefitPlan::leaves from leaf_begin on, and its inner nodes
+/// RefitPlan::inner[inner_begin, inner_end).
+struct RefitSubtree {
+    NodeRange nodes;
+    std::uint32_t slot_begin = 0;
+    std::uint32_t slot_end = 0;
+    std::uint32_t leaf_begin = 0;
+    std::uint32_t inner_begin = 0;
+    std::uint32_t inner_end = 0;
+};
+
 /// How refit splits a tree for threads: the subtrees refit in parallel, then the top nodes
-/// above them (in preorder; refit walks them backwards).
+/// above them (in preorder; refit walks them backwards). Built by plan_refit.
 struct RefitPlan {
-    std::vector<NodeRange> subtrees;
+    std::vector<RefitSubtree> subtrees;
     std::vector<std::uint32_t> top;
+    std::vector<std::uint32_t> leaves;    ///< every leaf's node index, in slot (= preorder) order
+    std::vector<std::uint8_t> leaf_ends;  ///< per triangle slot: 1 at the last slot of its leaf
+    std::vector<std::uint32_t> inner;     ///< the subtrees' inner nodes, subtree by subtree, in preorder
 };
 
 /// The hierarchy of one object. Empty (no nodes) for an object without triangles.

@@ -1,6 +1,6 @@
-// Refit: boxes recomputed bottom-up for new vertex positions (same topology). In preorder a
-// node's children come after it, so walking a subtree's range backwards visits children
-// first; the plan's subtrees go in parallel, then the top nodes, backwards.
+// Refit: boxes recomputed bottom-up for new vertex positions (same topology). The plan's
+// subtrees go in parallel, each as its leaves (triangle slots in order) and then its inner
+// nodes backwards in preorder (children before parents); then the top nodes, backwards.
 // The SAH cost is summed on the way, per subtree and then in plan order (deterministic).
 
 #include "bvh/bvh.hpp"
@@ -10,7 +10,9 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cassert>
+#include <cstring>
 
 namespace collidescope::bvh {
 namespace {
@@ -20,40 +22,104 @@ double node_cost(const Node& node) {
     return node.box.half_area() * (node.is_leaf() ? node.count : 1);
 }
 
-// Fits one node from its triangles (leaf) or children (inner node, already fitted). Plain
-// locals and one store per node: the compiler keeps the six bounds in registers.
-void fit_node(Tree& tree, std::uint32_t index, std::span<const Vec3> vertices) {
-    Node& node = tree.nodes[index];
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    double lo0 = inf, lo1 = inf, lo2 = inf, hi0 = -inf, hi1 = -inf, hi2 = -inf;
-    const auto grow = [&](const double* lo, const double* hi) {
-        lo0 = lo[0] < lo0 ? lo[0] : lo0;
-        lo1 = lo[1] < lo1 ? lo[1] : lo1;
-        lo2 = lo[2] < lo2 ? lo[2] : lo2;
-        hi0 = hi[0] > hi0 ? hi[0] : hi0;
-        hi1 = hi[1] > hi1 ? hi[1] : hi1;
-        hi2 = hi[2] > hi2 ? hi[2] : hi2;
-    };
-    if (node.is_leaf()) {
-        const TriIndices* tris = tree.leaf_triangles.data() + node.index;
-        for (std::uint32_t k = 0; k < node.count; ++k) {
-            for (const std::uint32_t v : tris[k]) grow(vertices[v].data(), vertices[v].data());
-        }
-    } else {
-        const Aabb& left = tree.nodes[index + 1].box;
-        const Aabb& right = tree.nodes[node.index].box;
-        grow(left.lo.data(), left.hi.data());
-        grow(right.lo.data(), right.hi.data());
+// x and y of a point or bound in one SIMD register (SSE2 on x86-64; GCC and Clang lower
+// the vector type to scalars where there is none). `a < b ? a : b` on it compiles to minpd,
+// the same exact min as on scalars.
+using Pair = double __attribute__((vector_size(16)));
+
+Pair load_xy(const double* p) {
+    Pair pair;
+    std::memcpy(&pair, p, sizeof pair);
+    return pair;
+}
+Pair min(Pair a, Pair b) { return a < b ? a : b; }
+Pair max(Pair a, Pair b) { return a > b ? a : b; }
+double min(double a, double b) { return a < b ? a : b; }
+double max(double a, double b) { return a > b ? a : b; }
+
+// Running bounds in registers: x and y paired, z alone.
+struct Bounds {
+    Pair lo_xy, hi_xy;
+    double lo_z, hi_z;
+
+    static Bounds empty() {
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        return {Pair{inf, inf}, Pair{-inf, -inf}, inf, -inf};
     }
-    node.box.lo = {lo0, lo1, lo2};
-    node.box.hi = {hi0, hi1, hi2};
+    void grow(const Bounds& b) {
+        lo_xy = min(b.lo_xy, lo_xy), hi_xy = max(b.hi_xy, hi_xy);
+        lo_z = min(b.lo_z, lo_z), hi_z = max(b.hi_z, hi_z);
+    }
+    void grow(const Aabb& b) { grow(Bounds{load_xy(b.lo.data()), load_xy(b.hi.data()), b.lo[2], b.hi[2]}); }
+    // A triangle's bounds, its corners reduced pairwise: each bound is a chain of two
+    // min/max operations, not three, and the triangles of a leaf overlap in flight.
+    static Bounds of(const Vec3& a, const Vec3& b, const Vec3& c) {
+        const Pair a_xy = load_xy(a.data()), b_xy = load_xy(b.data()), c_xy = load_xy(c.data());
+        return {min(min(a_xy, b_xy), c_xy), max(max(a_xy, b_xy), c_xy),  //
+                min(min(a[2], b[2]), c[2]), max(max(a[2], b[2]), c[2])};
+    }
+    /// Aabb::half_area of these bounds, computed the same way (the same double).
+    double half_area() const {
+        const double dx = hi_xy[0] - lo_xy[0], dy = hi_xy[1] - lo_xy[1], dz = hi_z - lo_z;
+        if (!(dx >= 0 && dy >= 0 && dz >= 0)) return 0;
+        return dx * dy + dy * dz + dz * dx;
+    }
+    void store(Aabb& box) const {
+        std::memcpy(box.lo.data(), &lo_xy, sizeof lo_xy);
+        std::memcpy(box.hi.data(), &hi_xy, sizeof hi_xy);
+        box.lo[2] = lo_z;
+        box.hi[2] = hi_z;
+    }
+};
+
+// Fits a top node from its children (already fitted), with one store, and returns its
+// node_cost from the registers.
+double fit_inner(Tree& tree, std::uint32_t index) {
+    Node& node = tree.nodes[index];
+    Bounds bounds = Bounds::empty();
+    bounds.grow(tree.nodes[index + 1].box);
+    bounds.grow(tree.nodes[node.index].box);
+    bounds.store(node.box);
+    return bounds.half_area();
 }
 
-double fit_range(Tree& tree, NodeRange range, std::span<const Vec3> vertices) {
+// How many triangle slots ahead refit asks for vertices: leaf order is spatial, not the
+// vertex array's order, so the hardware prefetcher cannot guess the gathers.
+constexpr std::uint32_t kPrefetchSlots = 16;
+
+// Fits one subtree and returns its nodes' node_cost sum, in two passes that never ask whether
+// a node is a leaf: the triangle slots in order, storing each leaf's box at its last slot
+// (flagged in the plan); then the inner nodes backwards, children before parents. The single
+// backward walk it replaces branched on leaf or inner node per node, unpredictably, and
+// called out and reloaded each box for its cost (docs/algorithms.md, "Refit").
+// Exact: min and max only, so a box is the same whatever the order.
+double fit_subtree(Tree& tree, const RefitSubtree& subtree, std::span<const Vec3> vertices) {
+    const RefitPlan& plan = tree.refit_plan;
+    Node* nodes = tree.nodes.data();
+    const TriIndices* tris = tree.leaf_triangles.data();
+    const std::uint32_t* leaf = plan.leaves.data() + subtree.leaf_begin;
     double cost = 0;
-    for (std::uint32_t i = range.end; i-- > range.root;) {
-        fit_node(tree, i, vertices);
-        cost += node_cost(tree.nodes[i]);
+    Bounds bounds = Bounds::empty();
+    std::uint32_t count = 0;
+    for (std::uint32_t k = subtree.slot_begin; k < subtree.slot_end; ++k) {
+        const TriIndices& ahead = tris[std::min(k + kPrefetchSlots, subtree.slot_end - 1)];
+        for (const std::uint32_t v : ahead) __builtin_prefetch(vertices.data() + v);
+        bounds.grow(Bounds::of(vertices[tris[k][0]], vertices[tris[k][1]], vertices[tris[k][2]]));
+        ++count;
+        if (plan.leaf_ends[k]) {
+            bounds.store(nodes[*leaf++].box);
+            cost += bounds.half_area() * count;
+            bounds = Bounds::empty();
+            count = 0;
+        }
+    }
+    for (std::uint32_t j = subtree.inner_end; j-- > subtree.inner_begin;) {
+        const std::uint32_t i = plan.inner[j];
+        Bounds inner = Bounds::empty();
+        inner.grow(nodes[i + 1].box);
+        inner.grow(nodes[nodes[i].index].box);
+        inner.store(nodes[i].box);
+        cost += inner.half_area();
     }
     return cost;
 }
@@ -81,14 +147,13 @@ RefitStats refit(Tree& tree, std::span<const TriIndices> triangles, std::span<co
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, plan.subtrees.size(), 1),
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t s = range.begin(); s != range.end(); ++s) {
-            subtree_cost[s] = fit_range(tree, plan.subtrees[s], vertices);
+            subtree_cost[s] = fit_subtree(tree, plan.subtrees[s], vertices);
         }
     });
     double cost = 0;
     for (const double c : subtree_cost) cost += c;
     for (std::size_t k = plan.top.size(); k-- > 0;) {
-        fit_node(tree, plan.top[k], vertices);
-        cost += node_cost(tree.nodes[plan.top[k]]);
+        cost += fit_inner(tree, plan.top[k]);
     }
     stats.nodes = static_cast<std::uint32_t>(tree.nodes.size());
     stats.sah_cost = normalise(tree, cost);

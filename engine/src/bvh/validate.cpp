@@ -122,7 +122,8 @@ private:
     // The refit plan's subtrees and top nodes together cover every node exactly once.
     void check_plan() {
         std::vector<int> covered(m_tree.nodes.size(), 0);
-        for (const NodeRange& range : m_tree.refit_plan.subtrees) {
+        for (const RefitSubtree& subtree : m_tree.refit_plan.subtrees) {
+            const NodeRange range = subtree.nodes;
             for (std::uint32_t i = range.root; i < range.end && i < covered.size(); ++i) ++covered[i];
         }
         for (const std::uint32_t top : m_tree.refit_plan.top) {
@@ -130,7 +131,49 @@ private:
         }
         if (std::any_of(covered.begin(), covered.end(), [](int c) { return c != 1; })) {
             fail("the refit plan does not cover every node exactly once");
+            return;
         }
+        check_plan_walks();
+    }
+
+    // What refit walks per subtree, recomputed node by node: the leaves in preorder with their
+    // slots and last-slot flags, the inner nodes in preorder.
+    void check_plan_walks() {
+        const RefitPlan& plan = m_tree.refit_plan;
+        if (plan.leaf_ends.size() != m_tree.triangle_ids.size()) {
+            fail("the refit plan's leaf_ends has " + std::to_string(plan.leaf_ends.size()) + " slots");
+            return;
+        }
+        std::vector<std::uint8_t> ends(m_tree.triangle_ids.size(), 0);
+        std::vector<std::uint32_t> leaves;
+        std::vector<std::uint32_t> inner;
+        for (std::size_t s = 0; s < plan.subtrees.size(); ++s) {
+            const RefitSubtree& subtree = plan.subtrees[s];
+            const std::string name = "refit subtree " + std::to_string(s);
+            if (subtree.leaf_begin != leaves.size()) fail(name + ": leaf_begin " + std::to_string(subtree.leaf_begin));
+            if (subtree.inner_begin != inner.size()) fail(name + ": inner_begin " + std::to_string(subtree.inner_begin));
+            std::uint32_t slot_begin = ~0u;
+            std::uint32_t slot_end = 0;
+            for (std::uint32_t i = subtree.nodes.root; i < subtree.nodes.end; ++i) {
+                const Node& node = m_tree.nodes[i];
+                if (!node.is_leaf()) {
+                    inner.push_back(i);
+                    continue;
+                }
+                leaves.push_back(i);
+                slot_begin = std::min(slot_begin, node.index);
+                slot_end = node.index + node.count;
+                if (slot_end - 1 < ends.size()) ends[slot_end - 1] = 1;
+            }
+            if (subtree.slot_begin != slot_begin || subtree.slot_end != slot_end) {
+                fail(name + ": slots [" + std::to_string(subtree.slot_begin) + ", " + std::to_string(subtree.slot_end) +
+                     "), its leaves hold [" + std::to_string(slot_begin) + ", " + std::to_string(slot_end) + ")");
+            }
+            if (subtree.inner_end != inner.size()) fail(name + ": inner_end " + std::to_string(subtree.inner_end));
+        }
+        if (plan.leaves != leaves) fail("the refit plan's leaves are not the tree's leaves in preorder");
+        if (plan.inner != inner) fail("the refit plan's inner nodes are not the subtrees' inner nodes in preorder");
+        if (plan.leaf_ends != ends) fail("the refit plan's leaf_ends do not mark the leaves' last slots");
     }
 
     const Tree& m_tree;
