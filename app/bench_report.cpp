@@ -21,12 +21,6 @@ std::vector<std::string> stage_names() {
     return names;
 }
 
-std::vector<std::string> count_names() {
-    std::vector<std::string> names;
-    for_each_count(FrameCounts{}, [&](const char* name, std::uint64_t) { names.emplace_back(name); });
-    return names;
-}
-
 std::string fixed(double value, int digits) {
     char text[64];
     std::snprintf(text, sizeof text, "%.*f", digits, value);

@@ -34,9 +34,14 @@ using Samples = std::vector<std::vector<std::vector<std::vector<double>>>>;  // 
 
 }  // namespace
 
-std::size_t count_index(const std::string& name) {
+std::vector<std::string> count_names() {
     std::vector<std::string> names;
-    for_each_count(FrameCounts{}, [&](const char* count, std::uint64_t) { names.emplace_back(count); });
+    for_each_count(FrameCounts{}, [&](const char* name, std::uint64_t) { names.emplace_back(name); });
+    return names;
+}
+
+std::size_t count_index(const std::string& name) {
+    const std::vector<std::string> names = count_names();
     return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
 }
 

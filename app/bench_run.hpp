@@ -63,6 +63,9 @@ struct BenchScene {
     std::uint64_t triangles = 0;     ///< in the first frame, all objects
 };
 
+/// The names of BenchFrame::counts, in order.
+std::vector<std::string> count_names();
+
 /// The position of the count `name` (e.g. "colliding_pairs") in BenchFrame::counts.
 std::size_t count_index(const std::string& name);
 

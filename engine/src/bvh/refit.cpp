@@ -72,7 +72,7 @@ struct Bounds {
     }
 };
 
-// Fits a top node from its children (already fitted), with one store, and returns its
+// Fits an inner node from its children (already fitted), with one store, and returns its
 // node_cost from the registers.
 double fit_inner(Tree& tree, std::uint32_t index) {
     Node& node = tree.nodes[index];
@@ -114,12 +114,7 @@ double fit_subtree(Tree& tree, const RefitSubtree& subtree, std::span<const Vec3
         }
     }
     for (std::uint32_t j = subtree.inner_end; j-- > subtree.inner_begin;) {
-        const std::uint32_t i = plan.inner[j];
-        Bounds inner = Bounds::empty();
-        inner.grow(nodes[i + 1].box);
-        inner.grow(nodes[nodes[i].index].box);
-        inner.store(nodes[i].box);
-        cost += inner.half_area();
+        cost += fit_inner(tree, plan.inner[j]);
     }
     return cost;
 }
