@@ -115,12 +115,8 @@ std::string summary_line(const recorder::RecordSummary& summary, const std::stri
 }
 
 int run_record(const RecordOptions& options) {
-    // Blocks of 1 MiB and more come from mmap and go back to the system when freed. glibc's
-    // default raises that threshold after the first large free (up to 32 MiB), so frame-sized
-    // blocks (the engine's, and the frames the writer thread frees) came from its arenas and
-    // stayed resident: E4:large, 60 frames, peak 1,138 MiB against 919 MiB with this setting,
-    // and the whole run over the documented bound (docs/robustness.md, "Bounded memory").
-    mallopt(M_MMAP_THRESHOLD, 1 << 20);
+    // No process-wide mallopt here: the recorder maps its own frame-sized buffers
+    // (recorder/src/large_blocks.hpp), which bounds memory without slowing the engine.
     const std::uint32_t depth_every = parse_depth(options.depth);
     const std::uint64_t budget = options.budget.empty() ? 0 : parse_size(options.budget, "--budget");
     const Scene scene = open_scene(options.inputs, options.scene);

@@ -2,6 +2,8 @@
 // A frame as the writer thread needs it (copied off the engine's spans), and the bounded queue
 // between the engine's thread and the writer thread.
 
+#include "large_blocks.hpp"
+
 #include "collidescope/gpu_cull.hpp"
 #include "collidescope/scene.hpp"
 #include "collidescope/types.hpp"
@@ -20,7 +22,7 @@ namespace collidescope::recorder {
 /// One object of one frame.
 struct ObjectRecord {
     std::shared_ptr<const Topology> new_topology;  ///< set when the topology changed (or frame 0)
-    std::vector<float> positions;                  ///< x y z per vertex, float32
+    LargeVector<float> positions;                  ///< x y z per vertex, float32
 };
 
 /// One frame, owned.
@@ -29,7 +31,7 @@ struct FrameRecord {
     std::uint8_t method = 0;              ///< code in the method enum
     std::vector<double> ms;               ///< for_each_stage order
     std::vector<std::uint64_t> counts;    ///< for_each_count order
-    std::vector<TrianglePair> pairs;
+    LargeVector<TrianglePair> pairs;
     std::vector<ObjectRecord> objects;
     bool has_gpu = false;                 ///< stats.gpu was set
     std::vector<double> gpu;              ///< for_each_gpu_value order (zeros without)
@@ -40,7 +42,7 @@ struct FrameRecord {
     std::vector<double> decision;         ///< for_each_decision_value order (zeros without)
     bool has_hybrid = false;              ///< stats.hybrid was set (schema 1.2)
     std::vector<double> hybrid;           ///< for_each_hybrid_value order (zeros without)
-    std::vector<std::array<std::uint32_t, 2>> survivors;  ///< GpuFrameInfo::survivors
+    LargeVector<std::array<std::uint32_t, 2>> survivors;  ///< GpuFrameInfo::survivors
     std::vector<GpuDepthImage> depth_images;              ///< GpuFrameInfo::depth_images
 
     /// Bytes held (what the queue's cap counts).

@@ -215,26 +215,56 @@ Id create_extensible(const Where& where, hid_t loc, const std::string& path, con
     return dataset;
 }
 
-void append_rows(const Where& where, hid_t dataset, const std::string& path, hsize_t& length, hid_t mem_type,
-                 hsize_t rows, const void* data) {
-    if (rows == 0) return;
-    const Id file_space0 = where.own(H5Dget_space(dataset), H5Sclose, "cannot read the shape of " + path);
-    const int rank = H5Sget_simple_extent_ndims(file_space0.get());
+namespace {
+
+/// Columns of a rank 1 or 2 dataset (1 for rank 1).
+hsize_t width_of(const Where& where, hid_t dataset, const std::string& path) {
+    const Id space = where.own(H5Dget_space(dataset), H5Sclose, "cannot read the shape of " + path);
+    const int rank = H5Sget_simple_extent_ndims(space.get());
     hsize_t dims[2] = {0, 1};
-    if (rank < 1 || rank > 2 || H5Sget_simple_extent_dims(file_space0.get(), dims, nullptr) < 0) {
+    if (rank < 1 || rank > 2 || H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0) {
         where.fail("cannot read the shape of " + path);
     }
-    const hsize_t new_dims[2] = {length + rows, dims[1]};
+    return dims[1];
+}
+
+}  // namespace
+
+void extend(const Where& where, hid_t dataset, const std::string& path, hsize_t rows) {
+    const hsize_t new_dims[2] = {rows, width_of(where, dataset, path)};
     where.check(H5Dset_extent(dataset, new_dims), "cannot extend " + path);
+}
+
+void write_rows(const Where& where, hid_t dataset, const std::string& path, hsize_t first, hid_t mem_type, hsize_t rows,
+                const void* data) {
+    if (rows == 0) return;
     const Id file_space = where.own(H5Dget_space(dataset), H5Sclose, "cannot read the shape of " + path);
-    const hsize_t start[2] = {length, 0};
+    const int rank = H5Sget_simple_extent_ndims(file_space.get());
+    hsize_t dims[2] = {0, 1};
+    if (rank < 1 || rank > 2 || H5Sget_simple_extent_dims(file_space.get(), dims, nullptr) < 0) {
+        where.fail("cannot read the shape of " + path);
+    }
+    const hsize_t start[2] = {first, 0};
     const hsize_t count[2] = {rows, dims[1]};
     where.check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
                 "cannot select rows of " + path);
     const Id mem_space = where.own(H5Screate_simple(rank, count, nullptr), H5Sclose, "cannot make a dataspace");
     where.check(H5Dwrite(dataset, mem_type, mem_space.get(), file_space.get(), H5P_DEFAULT, data),
                 "cannot write " + path);
+}
+
+void append_rows(const Where& where, hid_t dataset, const std::string& path, hsize_t& length, hid_t mem_type,
+                 hsize_t rows, const void* data) {
+    if (rows == 0) return;
+    extend(where, dataset, path, length + rows);
+    write_rows(where, dataset, path, length, mem_type, rows, data);
     length += rows;
+}
+
+void write_encoded_chunk(const Where& where, hid_t dataset, const std::string& path, hsize_t first,
+                         std::span<const unsigned char> encoded) {
+    const hsize_t offset[2] = {first, 0};
+    where.check(H5Dwrite_chunk(dataset, H5P_DEFAULT, 0, offset, encoded.size(), encoded.data()), "cannot write " + path);
 }
 
 std::vector<hsize_t> shape(const Where& where, hid_t dataset, const std::string& path) {

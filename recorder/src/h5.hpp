@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -97,6 +98,16 @@ Id create_extensible(const Where& where, hid_t loc, const std::string& path, con
 /// current length is `length`; updates `length`.
 void append_rows(const Where& where, hid_t dataset, const std::string& path, hsize_t& length, hid_t mem_type,
                  hsize_t rows, const void* data);
+
+/// Sets the length (rows) of an extensible dataset.
+void extend(const Where& where, hid_t dataset, const std::string& path, hsize_t rows);
+/// Writes `rows` rows of `mem_type` values at row `first` (inside the current extent).
+void write_rows(const Where& where, hid_t dataset, const std::string& path, hsize_t first, hid_t mem_type, hsize_t rows,
+                const void* data);
+/// Writes the chunk that starts at row `first` (a multiple of the chunk rows, inside the
+/// extent), already encoded with the dataset's own filters (all applied), via H5Dwrite_chunk.
+void write_encoded_chunk(const Where& where, hid_t dataset, const std::string& path, hsize_t first,
+                         std::span<const unsigned char> encoded);
 
 /// Shape of a dataset (dims), failing with the path named.
 std::vector<hsize_t> shape(const Where& where, hid_t dataset, const std::string& path);

@@ -21,8 +21,8 @@
 namespace collidescope::recorder {
 namespace {
 
-std::vector<float> to_float(const std::vector<Vec3>& vertices) {
-    std::vector<float> out(vertices.size() * 3);
+LargeVector<float> to_float(const std::vector<Vec3>& vertices) {
+    LargeVector<float> out(vertices.size() * 3);
     for (std::size_t v = 0; v < vertices.size(); ++v) {
         for (int axis = 0; axis < 3; ++axis) out[3 * v + static_cast<std::size_t>(axis)] = static_cast<float>(vertices[v][axis]);
     }
@@ -118,7 +118,7 @@ void copy_details(const FrameStats& stats, FrameRecord& record) {
         for (const GpuPassInfo& pass : stats.gpu->passes) {
             for_each_pass_field(pass, [&](const char*, std::uint64_t v) { record.gpu_passes.push_back(v); });
         }
-        record.survivors = stats.gpu->survivors;
+        record.survivors.assign(stats.gpu->survivors.begin(), stats.gpu->survivors.end());
         record.depth_images = stats.gpu->depth_images;
     }
     record.has_aabb = stats.aabb.has_value();

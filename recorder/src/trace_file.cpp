@@ -2,10 +2,13 @@
 
 #include "trace_file.hpp"
 
+#include "chunk_codec.hpp"
+
 #include "collidescope/error.hpp"
 #include "collidescope/recorder/schema.hpp"
 #include "collidescope/stats.hpp"
 
+#include <bit>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
@@ -150,6 +153,7 @@ void TraceFile::create_objects(const SessionInfo& session, const Frame& first, i
         columns.positions = make_column(prefix + schema::k_positions,
                                         {H5T_IEEE_F32LE, 3, chunk_rows(object.vertices.size()), deflate_level,
                                          schema::k_unit_length});
+        columns.positions_chunk_rows = chunk_rows(object.vertices.size());
         columns.vertex_offsets = make_column(prefix + schema::k_vertex_offsets,
                                              {H5T_STD_U64LE, 1, k_frame_chunk, 0, schema::k_unit_none});
         const std::uint64_t zero = 0;
@@ -161,6 +165,40 @@ void TraceFile::create_objects(const SessionInfo& session, const Frame& first, i
 
 void TraceFile::append_value(Column& column, hid_t mem_type, const void* value) {
     h5::append_rows(m_where, column.dataset.get(), column.path, column.length, mem_type, 1, value);
+}
+
+void TraceFile::append_positions(ObjectColumns& columns, std::span<const float> xyz) {
+    Column& column = columns.positions;
+    if (m_deflate == 0) {
+        h5::append_rows(m_where, column.dataset.get(), column.path, column.length, H5T_NATIVE_FLOAT, xyz.size() / 3,
+                        xyz.data());
+        return;
+    }
+    // Raw chunks skip HDF5's type conversion: memory order must be the file's (F32LE).
+    static_assert(std::endian::native == std::endian::little);
+    const hsize_t chunk = columns.positions_chunk_rows;
+    const hsize_t begin = column.length;
+    const hsize_t end = begin + xyz.size() / 3;
+    if (end == begin) return;
+    h5::extend(m_where, column.dataset.get(), column.path, end);
+    std::vector<float>& partial = columns.partial_chunk;
+    for (hsize_t row = begin; row < end;) {
+        const hsize_t first = row / chunk * chunk;
+        const hsize_t stop = std::min(end, first + chunk);
+        const std::span<const float> rows = xyz.subspan(3 * (row - begin), 3 * (stop - row));
+        std::span<const float> chunk_rows = rows;  // the chunk's rows from its first
+        if (row != first || stop != first + chunk) {  // partly filled: add to what it holds
+            if (row == first) partial.clear();
+            if (partial.size() != 3 * (row - first)) m_where.fail(column.path + ": lost track of a partial chunk");
+            partial.insert(partial.end(), rows.begin(), rows.end());
+            chunk_rows = partial;
+        }
+        encode_shuffle_deflate(std::as_bytes(chunk_rows), sizeof(float), m_deflate, m_encoded,
+                               3 * chunk * sizeof(float));
+        h5::write_encoded_chunk(m_where, column.dataset.get(), column.path, first, m_encoded);
+        row = stop;
+    }
+    column.length = end;
 }
 
 void TraceFile::append_topology(ObjectColumns& columns, const Topology& topology, std::uint32_t frame) {
@@ -198,10 +236,19 @@ void TraceFile::append(const FrameRecord& record, Keep keep) {
 void TraceFile::reserve_space(const FrameRecord& record) {
     haddr_t end = 0;
     m_where.check(H5Fget_eoa(m_file.get(), &end), "cannot read the end of the file");
-    // The frame's uncompressed bytes bound its chunks; chunk indexes and object headers grow
-    // by far less than the margin.
+    // The frame's uncompressed bytes bound its chunks, except where a frame fills positions
+    // chunks only partly (its vertex count is not the first frame's): then the chunk at
+    // either end is rewritten whole. Chunk indexes and object headers grow by far less than
+    // the margin.
     constexpr std::uint64_t k_margin = 256u << 10;
-    const std::uint64_t bytes = record.bytes();
+    std::uint64_t bytes = record.bytes();
+    for (std::size_t k = 0; k < m_objects.size() && k < record.objects.size(); ++k) {
+        const ObjectColumns& columns = m_objects[k];
+        const hsize_t rows = record.objects[k].positions.size() / 3;
+        if (rows != columns.positions_chunk_rows || columns.positions.length % columns.positions_chunk_rows != 0) {
+            bytes += 2 * columns.positions_chunk_rows * 3 * sizeof(float);
+        }
+    }
     m_reserve->reserve(end, bytes + bytes / 16 + k_margin);
 }
 
@@ -214,11 +261,7 @@ void TraceFile::write_frame(const FrameRecord& record, Keep keep) {
         ObjectColumns& columns = m_objects[k];
         const ObjectRecord& object = record.objects[k];
         if (object.new_topology) append_topology(columns, *object.new_topology, record.frame);
-        if (keep.positions) {
-            h5::append_rows(m_where, columns.positions.dataset.get(), columns.positions.path,
-                            columns.positions.length, H5T_NATIVE_FLOAT, object.positions.size() / 3,
-                            object.positions.data());
-        }
+        if (keep.positions) append_positions(columns, object.positions);
         const std::uint64_t end = columns.positions.length;
         append_value(columns.vertex_offsets, H5T_NATIVE_UINT64, &end);
     }

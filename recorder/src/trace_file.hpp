@@ -58,6 +58,11 @@ private:
     };
     struct ObjectColumns {
         Column triangles, topology_offsets, topology_from_frame, topology_vertex_count, positions, vertex_offsets;
+        hsize_t positions_chunk_rows = 0;  ///< vertices of the first frame: one frame per chunk
+        /// The rows written so far of the last, partly filled positions chunk (x y z from its
+        /// first row): a frame whose vertex count differs from the first frame's leaves one, and
+        /// the next frame rewrites it whole with its own rows added.
+        std::vector<float> partial_chunk;
     };
 
     void reserve_space(const FrameRecord& record);
@@ -81,6 +86,9 @@ private:
     void create_objects(const SessionInfo& session, const Frame& first, int deflate_level);
     void append_topology(ObjectColumns& columns, const Topology& topology, std::uint32_t frame);
     void append_value(Column& column, hid_t mem_type, const void* value);
+    /// One frame of an object's positions, every chunk it touches encoded here (chunk_codec.hpp)
+    /// and written raw; through HDF5's own path only when uncompressed.
+    void append_positions(ObjectColumns& columns, std::span<const float> xyz);
 
     h5::Where m_where;
     h5::Id m_file;
@@ -92,6 +100,7 @@ private:
     Column m_gpu_survivors, m_gpu_survivor_offsets;   ///< 1.2
     DepthColumns m_depth;                             ///< 1.2
     std::vector<std::uint16_t> m_pixels;              ///< scratch: one image quantised
+    std::vector<unsigned char> m_encoded;             ///< scratch: one positions chunk encoded
     std::vector<ObjectColumns> m_objects;
     std::unique_ptr<SpaceReserve> m_reserve;  ///< opened once SWMR writing started
     int m_deflate;
