@@ -48,18 +48,20 @@ public:
     Deflater(const Deflater&) = delete;
     Deflater& operator=(const Deflater&) = delete;
 
-    /// Feeds `bytes` at `level` (0 = stored blocks); `last` finishes the stream.
-    void feed(const unsigned char* bytes, std::size_t size, int level, bool last, std::vector<unsigned char>& out) {
-        if (level != m_level) {
+    /// Feeds `bytes` at `level` (0 = stored blocks) with `strategy`; `last` finishes the stream.
+    void feed(const unsigned char* bytes, std::size_t size, int level, int strategy, bool last,
+              std::vector<unsigned char>& out) {
+        if (level != m_level || strategy != m_strategy) {
             // Compresses the input so far with the old level first (as deflate with Z_BLOCK).
             for (;;) {
                 reserve(out);
-                const int status = deflateParams(&m_stream, level, Z_DEFAULT_STRATEGY);
+                const int status = deflateParams(&m_stream, level, strategy);
                 if (status == Z_OK) break;
                 if (status != Z_BUF_ERROR) throw std::runtime_error("zlib: deflateParams failed");
                 grow(out);
             }
             m_level = level;
+            m_strategy = strategy;
         }
         m_stream.next_in = const_cast<unsigned char*>(bytes);  // zlib's API is not const-correct
         m_stream.avail_in = static_cast<uInt>(size);
@@ -88,6 +90,7 @@ private:
 
     z_stream m_stream{};
     int m_level = -1;
+    int m_strategy = Z_DEFAULT_STRATEGY;
 };
 
 }  // namespace
@@ -128,8 +131,9 @@ ChunkEncoding encode_shuffle_deflate(std::span<const std::byte> raw, std::size_t
     thread_local std::vector<unsigned char> shuffled;
     std::span<const std::byte> whole = raw;
     if (chunk_size > raw.size()) {
-        padded.assign(chunk_size, std::byte{0});
+        padded.resize(chunk_size);
         std::memcpy(padded.data(), raw.data(), raw.size());
+        std::memset(padded.data() + raw.size(), 0, chunk_size - raw.size());
         whole = padded;
     }
     shuffled.resize(chunk_size);
@@ -140,6 +144,7 @@ ChunkEncoding encode_shuffle_deflate(std::span<const std::byte> raw, std::size_t
     struct Segment {
         std::size_t begin, size;
         int level;
+        int strategy = Z_DEFAULT_STRATEGY;  ///< zero padding: Z_RLE, runs only, the fastest
     };
     std::vector<Segment> segments;
     ChunkEncoding encoding;
@@ -149,12 +154,12 @@ ChunkEncoding encode_shuffle_deflate(std::span<const std::byte> raw, std::size_t
         const std::size_t plane = b * elements;
         const bool store = valid > 0 && sampled_entropy_bits({shuffled.data() + plane, valid}) >= k_store_entropy_bits;
         if (valid > 0) segments.push_back({plane, valid, store ? 0 : level});
-        if (elements > valid) segments.push_back({plane + valid, elements - valid, level});
+        if (elements > valid) segments.push_back({plane + valid, elements - valid, level, Z_RLE});
         ++(store ? encoding.planes_stored : encoding.planes_compressed);
     }
     const std::size_t leftover = chunk_size - elements * element_size;  // rides with the last segment
     if (segments.empty()) {
-        segments.push_back({0, leftover, level});
+        segments.push_back({0, leftover, level, Z_DEFAULT_STRATEGY});
     } else {
         segments.back().size += leftover;
     }
@@ -162,8 +167,9 @@ ChunkEncoding encode_shuffle_deflate(std::span<const std::byte> raw, std::size_t
     out.resize(std::max<std::size_t>(out.capacity(), chunk_size + chunk_size / 64 + 1024));
     Deflater deflater(level);
     for (std::size_t i = 0; i < segments.size(); ++i) {
-        deflater.feed(shuffled.data() + segments[i].begin, segments[i].size, segments[i].level, i + 1 == segments.size(),
-                      out);
+        const Segment& segment = segments[i];
+        deflater.feed(shuffled.data() + segment.begin, segment.size, segment.level, segment.strategy,
+                      i + 1 == segments.size(), out);
     }
     out.resize(deflater.written());
     return encoding;

@@ -2,6 +2,8 @@
 
 #include "frame_queue.hpp"
 
+#include <algorithm>
+
 namespace collidescope::recorder {
 
 std::size_t FrameRecord::bytes() const {
@@ -31,15 +33,23 @@ bool FrameQueue::push(FrameRecord record) {
     return true;
 }
 
-std::optional<FrameRecord> FrameQueue::pop() {
+FrameQueue::Taken FrameQueue::take_waiting(std::size_t max_frames) {
     std::unique_lock lock(m_mutex);
     m_not_empty.wait(lock, [&] { return m_closed || !m_frames.empty(); });
-    if (m_frames.empty()) return std::nullopt;
-    auto [record, size] = std::move(m_frames.front());
-    m_frames.pop_front();
-    m_bytes -= size;
+    Taken taken;
+    while (!m_frames.empty() && taken.records.size() < std::max<std::size_t>(max_frames, 1)) {
+        auto& [record, size] = m_frames.front();
+        taken.records.push_back(std::move(record));
+        taken.bytes += size;
+        m_frames.pop_front();
+    }
+    return taken;
+}
+
+void FrameQueue::release(std::size_t bytes) {
+    std::lock_guard lock(m_mutex);
+    m_bytes -= std::min(bytes, m_bytes);
     m_not_full.notify_all();
-    return std::move(record);
 }
 
 void FrameQueue::close(bool discard) {

@@ -14,7 +14,6 @@
 #include <deque>
 #include <memory>
 #include <mutex>
-#include <optional>
 #include <vector>
 
 namespace collidescope::recorder {
@@ -49,16 +48,25 @@ struct FrameRecord {
     std::size_t bytes() const;
 };
 
-/// Bounded by bytes: push blocks while the queue holds more than the cap (one frame is always
-/// admitted, so a frame larger than the cap still passes). close() ends the stream.
+/// Bounded by bytes, the frames queued and the frames the writer took but has not written yet:
+/// push blocks while they hold more than the cap (a frame is always admitted into an empty
+/// queue, so a frame larger than the cap still passes). close() ends the stream.
 class FrameQueue {
 public:
     explicit FrameQueue(std::size_t cap_bytes) : m_cap(cap_bytes) {}
 
     /// Blocks while full; returns false (dropping the frame) once closed.
     bool push(FrameRecord record);
-    /// Blocks until a frame or close; nullopt when closed and empty.
-    std::optional<FrameRecord> pop();
+    /// Frames taken by the writer: they still count against the cap until released.
+    struct Taken {
+        std::vector<FrameRecord> records;
+        std::size_t bytes = 0;
+    };
+    /// Blocks until a frame or close, then takes every frame waiting, at most `max_frames`
+    /// (at least 1); no records when closed and empty. Release the bytes once written.
+    Taken take_waiting(std::size_t max_frames);
+    /// The frames of a take are written: their bytes leave the cap.
+    void release(std::size_t bytes);
     /// No more pushes; pop drains what is left. With `discard`, what is queued is dropped.
     void close(bool discard = false);
     std::size_t peak_bytes() const;

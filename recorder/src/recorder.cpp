@@ -3,6 +3,7 @@
 #include "collidescope/recorder/recorder.hpp"
 
 #include "file_budget.hpp"
+#include "frame_copier.hpp"
 #include "frame_queue.hpp"
 #include "trace_file.hpp"
 
@@ -21,13 +22,9 @@
 namespace collidescope::recorder {
 namespace {
 
-LargeVector<float> to_float(const std::vector<Vec3>& vertices) {
-    LargeVector<float> out(vertices.size() * 3);
-    for (std::size_t v = 0; v < vertices.size(); ++v) {
-        for (int axis = 0; axis < 3; ++axis) out[3 * v + static_cast<std::size_t>(axis)] = static_cast<float>(vertices[v][axis]);
-    }
-    return out;
-}
+/// Most frames one flush writes (group commit): bounds what a killed recording can lose of the
+/// frames the writer had already taken from the queue.
+constexpr std::size_t k_max_frames_per_flush = 16;
 
 // "run.h5: frame 37: cannot reserve ... (No space left on device); the 37 frames before it
 // are intact and the file is left unfinished (partial)".
@@ -43,9 +40,7 @@ std::string write_error_line(const std::string& what, std::uint64_t intact, bool
 
 struct Recorder::State {
     RecorderConfig config;
-    std::vector<std::string> methods = method_names();
-    std::vector<std::uint64_t> revisions;  ///< last topology revision recorded, per object
-    bool first = true;
+    FrameCopier copier;
     TraceFile file;
     FrameQueue queue;
     FileBudget budget;
@@ -57,13 +52,13 @@ struct Recorder::State {
 
     State(RecorderConfig config_in, const SessionInfo& session, const Frame& first_frame)
         : config(std::move(config_in)),
-          file(config.path, session, first_frame, methods, config.deflate_level),
+          copier(config.path.string()),
+          file(config.path, session, first_frame, copier.methods(), config.deflate_level),
           queue(config.queue_bytes),
           budget(config.budget_bytes, session.frame_end - session.frame_begin) {}
 
     void write_loop();
     void rethrow_writer_error();
-    FrameRecord copy(const FrameReport& report);
 };
 
 void Recorder::State::write_loop() {
@@ -74,22 +69,32 @@ void Recorder::State::write_loop() {
         setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), config.writer_nice);
     }
     FileBudget::Usage usage;
+    // Every frame waiting is written at once (one append per dataset, one flush): a writer
+    // that fell behind catches up at a fraction of the per-frame cost. With --budget, one frame
+    // at a time, so that the budget sees the file after every frame as it plans the next.
+    const std::size_t batch = config.budget_bytes > 0 ? 1 : k_max_frames_per_flush;
     try {
-        while (std::optional<FrameRecord> record = queue.pop()) {
-            TraceFile::Keep keep;
-            keep.positions = budget.keep_positions(summary.frames);
-            const bool has_depth = !record->depth_images.empty();
-            keep.depth = has_depth && budget.keep_depth();
-            file.append(*record, keep);
-            summary.positions_dropped += keep.positions ? 0 : 1;
-            summary.depth_frames += has_depth ? 1 : 0;
-            summary.depth_dropped += has_depth && !keep.depth ? 1 : 0;
-            ++summary.frames;
+        for (FrameQueue::Taken taken; !(taken = queue.take_waiting(batch)).records.empty();) {
+            const std::vector<FrameRecord>& records = taken.records;
+            std::vector<TraceFile::Keep> keeps(records.size());
+            for (std::size_t i = 0; i < records.size(); ++i) {
+                keeps[i].positions = budget.keep_positions(summary.frames + i);
+                keeps[i].depth = !records[i].depth_images.empty() && budget.keep_depth();
+            }
+            file.append(records, keeps);
+            for (std::size_t i = 0; i < records.size(); ++i) {
+                const bool has_depth = !records[i].depth_images.empty();
+                summary.positions_dropped += keeps[i].positions ? 0 : 1;
+                summary.depth_frames += has_depth ? 1 : 0;
+                summary.depth_dropped += has_depth && !keeps[i].depth ? 1 : 0;
+                ++summary.frames;
+                usage.positions_kept += keeps[i].positions ? 1 : 0;
+                usage.depth_kept += keeps[i].depth ? 1 : 0;
+                usage.depth_seen += has_depth ? 1 : 0;
+            }
+            queue.release(taken.bytes);
             if (config.budget_bytes > 0) {
                 usage.rows = summary.frames;
-                usage.positions_kept += keep.positions ? 1 : 0;
-                usage.depth_kept += keep.depth ? 1 : 0;
-                usage.depth_seen += has_depth ? 1 : 0;
                 usage.file_bytes = file.file_bytes();
                 usage.positions_bytes = file.positions_bytes();
                 usage.depth_bytes = file.depth_bytes();
@@ -98,7 +103,7 @@ void Recorder::State::write_loop() {
         }
     } catch (const std::exception& failure) {
         std::lock_guard lock(error_mutex);
-        error = std::make_exception_ptr(InputError(write_error_line(failure.what(), summary.frames, file.damaged())));
+        error = std::make_exception_ptr(InputError(write_error_line(failure.what(), file.frames_written(), file.damaged())));
         queue.close(true);  // the engine's next push returns false and sees the error
     }
 }
@@ -108,59 +113,8 @@ void Recorder::State::rethrow_writer_error() {
     if (error) std::rethrow_exception(error);
 }
 
-namespace {
-
-// The methods' own details (schema 1.1 and 1.2): zeros and present = 0 when a method has none.
-void copy_details(const FrameStats& stats, FrameRecord& record) {
-    record.has_gpu = stats.gpu.has_value();
-    for_each_gpu_value(stats.gpu.value_or(GpuFrameInfo{}), [&](const char*, double v, const char*) { record.gpu.push_back(v); });
-    if (stats.gpu) {
-        for (const GpuPassInfo& pass : stats.gpu->passes) {
-            for_each_pass_field(pass, [&](const char*, std::uint64_t v) { record.gpu_passes.push_back(v); });
-        }
-        record.survivors.assign(stats.gpu->survivors.begin(), stats.gpu->survivors.end());
-        record.depth_images = stats.gpu->depth_images;
-    }
-    record.has_aabb = stats.aabb.has_value();
-    for_each_aabb_value(stats.aabb.value_or(AabbFrameInfo{}), [&](const char*, double v, const char*) { record.aabb.push_back(v); });
-    record.has_decision = stats.decision.has_value();
-    for_each_decision_value(stats.decision.value_or(DecisionInfo{}),
-                            [&](const char*, double v, const char*) { record.decision.push_back(v); });
-    record.has_hybrid = stats.hybrid.has_value();
-    for_each_hybrid_value(stats.hybrid.value_or(HybridFrameInfo{}),
-                          [&](const char*, double v, const char*) { record.hybrid.push_back(v); });
-}
-
-}  // namespace
-
-FrameRecord Recorder::State::copy(const FrameReport& report) {
-    FrameRecord record;
-    record.frame = report.frame.index;
-    const auto code = std::find(methods.begin(), methods.end(), report.stats.method);
-    if (code == methods.end()) throw InputError(config.path.string() + ": unknown method " + report.stats.method);
-    record.method = static_cast<std::uint8_t>(code - methods.begin());
-    for_each_stage(report.stats.ms, [&](const char*, double value) { record.ms.push_back(value); });
-    for_each_count(report.stats.counts, [&](const char*, std::uint64_t value) { record.counts.push_back(value); });
-    record.pairs.assign(report.colliding_pairs.begin(), report.colliding_pairs.end());
-    copy_details(report.stats, record);
-    if (first) revisions.assign(report.frame.objects.size(), 0);
-    for (std::size_t k = 0; k < report.frame.objects.size(); ++k) {
-        const ObjectFrame& object = report.frame.objects[k];
-        ObjectRecord out;
-        if (first || object.topology->revision != revisions[k]) {
-            out.new_topology = object.topology;
-            revisions[k] = object.topology->revision;
-        }
-        out.positions = to_float(object.vertices);
-        record.objects.push_back(std::move(out));
-    }
-    first = false;
-    return record;
-}
-
 Recorder::Recorder(RecorderConfig config, SessionInfo session, const Frame& first_frame)
     : m_state(std::make_unique<State>(std::move(config), session, first_frame)) {
-    if (m_state->methods.size() > 255) throw InputError("too many methods for the recording's enum");
     m_state->writer = std::thread([state = m_state.get()] { state->write_loop(); });
 }
 
@@ -177,7 +131,7 @@ Recorder::~Recorder() {
 
 void Recorder::on_frame(const FrameReport& report) {
     m_state->rethrow_writer_error();
-    if (!m_state->queue.push(m_state->copy(report))) m_state->rethrow_writer_error();
+    if (!m_state->queue.push(m_state->copier.copy(report))) m_state->rethrow_writer_error();
 }
 
 RecordSummary Recorder::finish(const std::string& interrupted) {

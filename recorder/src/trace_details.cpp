@@ -51,10 +51,14 @@ TraceFile::DetailGroup TraceFile::create_detail_group(const std::string& group,
     return out;
 }
 
-void TraceFile::append_detail_group(DetailGroup& group, bool present, const std::vector<double>& values) {
-    const std::uint8_t flag = present ? 1 : 0;
-    append_value(group.present, H5T_NATIVE_UINT8, &flag);
-    for (std::size_t i = 0; i < group.values.size(); ++i) append_value(group.values[i], H5T_NATIVE_DOUBLE, &values[i]);
+template <class Member>
+void TraceFile::append_detail_group(DetailGroup& group, std::span<const FrameRecord> records, Member member) {
+    append_per_frame<std::uint8_t>(group.present, H5T_NATIVE_UINT8, records,
+                                   [&](const FrameRecord& record) { return member(record).first ? 1 : 0; });
+    for (std::size_t i = 0; i < group.values.size(); ++i) {
+        append_per_frame<double>(group.values[i], H5T_NATIVE_DOUBLE, records,
+                                 [&](const FrameRecord& record) { return member(record).second[i]; });
+    }
 }
 
 void TraceFile::create_details() {
@@ -108,27 +112,40 @@ void TraceFile::append_depth(const std::vector<GpuDepthImage>& images) {
         const double range[2] = {image.depth_near, image.depth_far};
         append_value(m_depth.range, H5T_NATIVE_DOUBLE, range);
     }
-    const std::uint64_t images_end = m_depth.info.length;
-    append_value(m_depth.image_offsets, H5T_NATIVE_UINT64, &images_end);
 }
 
-void TraceFile::append_details(const FrameRecord& record, bool keep_depth) {
-    append_detail_group(m_gpu, record.has_gpu, record.gpu);
-    append_detail_group(m_aabb, record.has_aabb, record.aabb);
-    append_detail_group(m_decision, record.has_decision, record.decision);
-    append_detail_group(m_hybrid, record.has_hybrid, record.hybrid);
+void TraceFile::append_details(std::span<const FrameRecord> records, std::span<const Keep> keeps) {
+    using Member = std::pair<bool, const std::vector<double>&>;
+    append_detail_group(m_gpu, records, [](const FrameRecord& r) { return Member(r.has_gpu, r.gpu); });
+    append_detail_group(m_aabb, records, [](const FrameRecord& r) { return Member(r.has_aabb, r.aabb); });
+    append_detail_group(m_decision, records, [](const FrameRecord& r) { return Member(r.has_decision, r.decision); });
+    append_detail_group(m_hybrid, records, [](const FrameRecord& r) { return Member(r.has_hybrid, r.hybrid); });
+
     const hsize_t fields = pass_field_count();
-    if (!record.gpu_passes.empty()) {
-        h5::append_rows(m_where, m_gpu_passes.dataset.get(), m_gpu_passes.path, m_gpu_passes.length, H5T_NATIVE_UINT64,
-                        record.gpu_passes.size() / fields, record.gpu_passes.data());
-    }
-    const std::uint64_t passes_end = m_gpu_passes.length;
-    append_value(m_gpu_pass_offsets, H5T_NATIVE_UINT64, &passes_end);
+    std::vector<std::uint64_t> passes;
+    for (const FrameRecord& record : records) passes.insert(passes.end(), record.gpu_passes.begin(), record.gpu_passes.end());
+    std::uint64_t passes_end = m_gpu_passes.length;
+    h5::append_rows(m_where, m_gpu_passes.dataset.get(), m_gpu_passes.path, m_gpu_passes.length, H5T_NATIVE_UINT64,
+                    passes.size() / fields, passes.data());
+    append_per_frame<std::uint64_t>(m_gpu_pass_offsets, H5T_NATIVE_UINT64, records, [&](const FrameRecord& record) {
+        return passes_end += record.gpu_passes.size() / fields;
+    });
+
+    std::vector<std::array<std::uint32_t, 2>> survivors;
+    for (const FrameRecord& record : records) survivors.insert(survivors.end(), record.survivors.begin(), record.survivors.end());
+    std::uint64_t survivors_end = m_gpu_survivors.length;
     h5::append_rows(m_where, m_gpu_survivors.dataset.get(), m_gpu_survivors.path, m_gpu_survivors.length,
-                    H5T_NATIVE_UINT32, record.survivors.size(), record.survivors.data());
-    const std::uint64_t survivors_end = m_gpu_survivors.length;
-    append_value(m_gpu_survivor_offsets, H5T_NATIVE_UINT64, &survivors_end);
-    append_depth(keep_depth ? record.depth_images : std::vector<GpuDepthImage>{});
+                    H5T_NATIVE_UINT32, survivors.size(), survivors.data());
+    append_per_frame<std::uint64_t>(m_gpu_survivor_offsets, H5T_NATIVE_UINT64, records,
+                                    [&](const FrameRecord& record) { return survivors_end += record.survivors.size(); });
+
+    std::vector<std::uint64_t> images_end;
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        if (keeps[i].depth) append_depth(records[i].depth_images);
+        images_end.push_back(m_depth.info.length);
+    }
+    h5::append_rows(m_where, m_depth.image_offsets.dataset.get(), m_depth.image_offsets.path, m_depth.image_offsets.length,
+                    H5T_NATIVE_UINT64, images_end.size(), images_end.data());
 }
 
 std::uint64_t TraceFile::depth_bytes() const { return H5Dget_storage_size(m_depth.pixels.dataset.get()); }

@@ -211,21 +211,30 @@ void TraceFile::append_topology(ObjectColumns& columns, const Topology& topology
     append_value(columns.topology_vertex_count, H5T_NATIVE_UINT32, &topology.vertex_count);
 }
 
-void TraceFile::append(const FrameRecord& record, Keep keep) {
-    const std::string frame = "frame " + std::to_string(record.frame);
+void TraceFile::append(std::span<const FrameRecord> records, std::span<const Keep> keeps) {
+    if (records.empty()) return;
+    const std::string frames = records.size() == 1 ? "frame " + std::to_string(records.front().frame)
+                                                   : "frames " + std::to_string(records.front().frame) + "-" +
+                                                         std::to_string(records.back().frame);
     try {
-        reserve_space(record);
-    } catch (const InputError& error) {  // nothing of the frame written: the file is as it was
-        throw InputError(m_where.file() + ": " + frame + ": " + std::string(error.what()).substr(m_where.file().size() + 2));
+        reserve_space(records);
+    } catch (const InputError& error) {  // nothing of the frames written: the file is as it was
+        if (records.size() > 1) {
+            // Keep every frame that fits, and name the one that does not: one at a time.
+            for (std::size_t i = 0; i < records.size(); ++i) append(records.subspan(i, 1), keeps.subspan(i, 1));
+            return;
+        }
+        throw InputError(m_where.file() + ": " + frames + ": " + std::string(error.what()).substr(m_where.file().size() + 2));
     }
     errno = 0;
     try {
-        write_frame(record, keep);
+        write_frames(records, keeps);
+        m_frames_written += records.size();
     } catch (const InputError& error) {
         m_damaged = true;
         // HDF5 reports a failed write without its reason; errno still holds the system's.
         const int system_error = errno;
-        std::string line = m_where.file() + ": " + frame + ": " + std::string(error.what()).substr(m_where.file().size() + 2);
+        std::string line = m_where.file() + ": " + frames + ": " + std::string(error.what()).substr(m_where.file().size() + 2);
         if (system_error == ENOSPC || system_error == EFBIG || system_error == EDQUOT || system_error == EIO) {
             line += " (" + std::string(std::strerror(system_error)) + ")";
         }
@@ -233,49 +242,65 @@ void TraceFile::append(const FrameRecord& record, Keep keep) {
     }
 }
 
-void TraceFile::reserve_space(const FrameRecord& record) {
+void TraceFile::reserve_space(std::span<const FrameRecord> records) {
     haddr_t end = 0;
     m_where.check(H5Fget_eoa(m_file.get(), &end), "cannot read the end of the file");
-    // The frame's uncompressed bytes bound its chunks, except where a frame fills positions
+    // The frames' uncompressed bytes bound their chunks, except where a frame fills positions
     // chunks only partly (its vertex count is not the first frame's): then the chunk at
     // either end is rewritten whole. Chunk indexes and object headers grow by far less than
     // the margin.
     constexpr std::uint64_t k_margin = 256u << 10;
-    std::uint64_t bytes = record.bytes();
-    for (std::size_t k = 0; k < m_objects.size() && k < record.objects.size(); ++k) {
-        const ObjectColumns& columns = m_objects[k];
-        const hsize_t rows = record.objects[k].positions.size() / 3;
-        if (rows != columns.positions_chunk_rows || columns.positions.length % columns.positions_chunk_rows != 0) {
-            bytes += 2 * columns.positions_chunk_rows * 3 * sizeof(float);
+    std::uint64_t bytes = 0;
+    for (const FrameRecord& record : records) {
+        bytes += record.bytes();
+        for (std::size_t k = 0; k < m_objects.size() && k < record.objects.size(); ++k) {
+            const hsize_t chunk = m_objects[k].positions_chunk_rows;
+            if (record.objects[k].positions.size() / 3 != chunk) bytes += 2 * chunk * 3 * sizeof(float);
         }
     }
     m_reserve->reserve(end, bytes + bytes / 16 + k_margin);
 }
 
-void TraceFile::write_frame(const FrameRecord& record, Keep keep) {
-    if (record.objects.size() != m_objects.size()) {
-        m_where.fail("frame " + std::to_string(record.frame) + " has " + std::to_string(record.objects.size()) +
-                     " objects, the recording " + std::to_string(m_objects.size()));
+void TraceFile::write_frames(std::span<const FrameRecord> records, std::span<const Keep> keeps) {
+    for (const FrameRecord& record : records) {
+        if (record.objects.size() != m_objects.size()) {
+            m_where.fail("frame " + std::to_string(record.frame) + " has " + std::to_string(record.objects.size()) +
+                         " objects, the recording " + std::to_string(m_objects.size()));
+        }
     }
     for (std::size_t k = 0; k < m_objects.size(); ++k) {
         ObjectColumns& columns = m_objects[k];
-        const ObjectRecord& object = record.objects[k];
-        if (object.new_topology) append_topology(columns, *object.new_topology, record.frame);
-        if (keep.positions) append_positions(columns, object.positions);
-        const std::uint64_t end = columns.positions.length;
-        append_value(columns.vertex_offsets, H5T_NATIVE_UINT64, &end);
+        std::vector<std::uint64_t> ends;
+        for (std::size_t i = 0; i < records.size(); ++i) {
+            const ObjectRecord& object = records[i].objects[k];
+            if (object.new_topology) append_topology(columns, *object.new_topology, records[i].frame);
+            if (keeps[i].positions) append_positions(columns, object.positions);
+            ends.push_back(columns.positions.length);
+        }
+        h5::append_rows(m_where, columns.vertex_offsets.dataset.get(), columns.vertex_offsets.path,
+                        columns.vertex_offsets.length, H5T_NATIVE_UINT64, ends.size(), ends.data());
     }
     static_assert(sizeof(TrianglePair) == 4 * sizeof(std::uint32_t));
-    h5::append_rows(m_where, m_pairs.dataset.get(), m_pairs.path, m_pairs.length, H5T_NATIVE_UINT32,
-                    record.pairs.size(), record.pairs.data());
-    const std::uint64_t pairs_end = m_pairs.length;
-    append_value(m_pair_offsets, H5T_NATIVE_UINT64, &pairs_end);
-    for (std::size_t s = 0; s < m_ms.size(); ++s) append_value(m_ms[s], H5T_NATIVE_DOUBLE, &record.ms[s]);
-    for (std::size_t c = 0; c < m_counts.size(); ++c) append_value(m_counts[c], H5T_NATIVE_UINT64, &record.counts[c]);
-    append_value(m_method, m_method_type.get(), &record.method);
-    append_details(record, keep.depth);
+    std::uint64_t pairs_end = m_pairs.length;
+    std::vector<TrianglePair> pairs;
+    for (const FrameRecord& record : records) pairs.insert(pairs.end(), record.pairs.begin(), record.pairs.end());
+    h5::append_rows(m_where, m_pairs.dataset.get(), m_pairs.path, m_pairs.length, H5T_NATIVE_UINT32, pairs.size(),
+                    pairs.data());
+    append_per_frame<std::uint64_t>(m_pair_offsets, H5T_NATIVE_UINT64, records,
+                                    [&](const FrameRecord& record) { return pairs_end += record.pairs.size(); });
+    for (std::size_t s = 0; s < m_ms.size(); ++s) {
+        append_per_frame<double>(m_ms[s], H5T_NATIVE_DOUBLE, records, [s](const FrameRecord& record) { return record.ms[s]; });
+    }
+    for (std::size_t c = 0; c < m_counts.size(); ++c) {
+        append_per_frame<std::uint64_t>(m_counts[c], H5T_NATIVE_UINT64, records,
+                                        [c](const FrameRecord& record) { return record.counts[c]; });
+    }
+    append_per_frame<std::uint8_t>(m_method, m_method_type.get(), records,
+                                   [](const FrameRecord& record) { return record.method; });
+    append_details(records, keeps);
     // The frame index last: a reader counts a frame complete when every dataset has its row.
-    append_value(m_index, H5T_NATIVE_UINT32, &record.frame);
+    append_per_frame<std::uint32_t>(m_index, H5T_NATIVE_UINT32, records,
+                                    [](const FrameRecord& record) { return record.frame; });
     m_where.check(H5Fflush(m_file.get(), H5F_SCOPE_LOCAL), "cannot flush the file");
 }
 

@@ -29,13 +29,19 @@ public:
         bool positions = true;
         bool depth = true;  ///< the depth images (GpuFrameInfo::depth_images)
     };
-    /// Reserves the frame's disk space (space_reserve.hpp), then appends it (positions and
-    /// depth images only as `keep` says), the frame index last, and flushes the file. Throws
-    /// InputError naming the file, the frame and, for a failed write, the system's reason.
-    void append(const FrameRecord& record, Keep keep);
+    /// Reserves the frames' disk space (space_reserve.hpp), then appends them (positions and
+    /// depth images only as `keeps` say, one Keep per frame), each dataset's rows of all the
+    /// frames at once, the frame index last, and flushes the file once (group commit: the
+    /// writer passes every frame waiting for it). When the group's disk space cannot be
+    /// reserved, its frames are appended one at a time, so that every frame that fits is kept.
+    /// Throws InputError naming the file, the frame(s) and, for a failed write, the system's
+    /// reason.
+    void append(std::span<const FrameRecord> records, std::span<const Keep> keeps);
     /// True once a write failed inside a frame (after its space was reserved: should not
     /// happen): HDF5 may have written part of it, and the file may not open.
     bool damaged() const { return m_damaged; }
+    /// Frames appended and flushed so far.
+    std::uint64_t frames_written() const { return m_frames_written; }
     /// Current size of the file in bytes.
     std::uint64_t file_bytes() const;
     /// Bytes the positions datasets occupy (all objects).
@@ -65,8 +71,8 @@ private:
         std::vector<float> partial_chunk;
     };
 
-    void reserve_space(const FrameRecord& record);
-    void write_frame(const FrameRecord& record, Keep keep);
+    void reserve_space(std::span<const FrameRecord> records);
+    void write_frames(std::span<const FrameRecord> records, std::span<const Keep> keeps);
     Column make_column(const std::string& path, const h5::ExtensibleSpec& spec, hid_t loc = -1);
     void write_metadata(const SessionInfo& session);
     void create_frames(std::span<const std::string> methods);
@@ -79,13 +85,24 @@ private:
         Column image_offsets, info, range, pixel_offsets, pixels;
     };
     DetailGroup create_detail_group(const std::string& group, const std::vector<std::pair<std::string, std::string>>& columns);
-    void append_detail_group(DetailGroup& group, bool present, const std::vector<double>& values);
+    /// One row per frame of `present` and of every value column; `member` picks a
+    /// FrameRecord's (present flag, values) pair.
+    template <class Member>
+    void append_detail_group(DetailGroup& group, std::span<const FrameRecord> records, Member member);
     void create_details();
-    void append_details(const FrameRecord& record, bool keep_depth);
+    void append_details(std::span<const FrameRecord> records, std::span<const Keep> keeps);
     void append_depth(const std::vector<GpuDepthImage>& images);
     void create_objects(const SessionInfo& session, const Frame& first, int deflate_level);
     void append_topology(ObjectColumns& columns, const Topology& topology, std::uint32_t frame);
     void append_value(Column& column, hid_t mem_type, const void* value);
+    /// Appends one row per frame: `value(record)` of each, as `T` (a native type of `mem_type`).
+    template <class T, class Value>
+    void append_per_frame(Column& column, hid_t mem_type, std::span<const FrameRecord> records, Value value) {
+        std::vector<T> rows;
+        rows.reserve(records.size());
+        for (const FrameRecord& record : records) rows.push_back(static_cast<T>(value(record)));
+        h5::append_rows(m_where, column.dataset.get(), column.path, column.length, mem_type, rows.size(), rows.data());
+    }
     /// One frame of an object's positions, every chunk it touches encoded here (chunk_codec.hpp)
     /// and written raw; through HDF5's own path only when uncompressed.
     void append_positions(ObjectColumns& columns, std::span<const float> xyz);
@@ -105,6 +122,7 @@ private:
     std::unique_ptr<SpaceReserve> m_reserve;  ///< opened once SWMR writing started
     int m_deflate;
     bool m_damaged = false;
+    std::uint64_t m_frames_written = 0;
     hsize_t m_depth_chunk;  ///< pixels per chunk of /gpu/depth/pixels: one image
 };
 
