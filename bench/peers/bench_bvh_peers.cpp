@@ -251,7 +251,8 @@ void BM_peers(benchmark::State& state) {
 // Arguments: data set, frames (the first N; each frame's peers refit from the last).
 BENCHMARK(BM_peers)
     ->ArgNames({"set", "frames"})
-    ->Args({0, 50})->Args({1, 50})->Args({2, 50})->Args({3, 50})->Args({4, 25})->Args({7, 50})
+    ->Args({0, 50})->Args({1, 50})->Args({2, 50})->Args({3, 50})->Args({4, 25})->Args({5, 50})->Args({6, 50})
+    ->Args({7, 50})
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
 
