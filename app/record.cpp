@@ -37,7 +37,8 @@ struct RecordOptions {
 
 constexpr const char* k_footer = R"(Writes one HDF5 file (schema: docs/recording.md; read it with h5py, h5dump,
 `collidescope inspect`, `validate`, `compare` or the scripts in scripts/). The file is written
-frame by frame in SWMR mode: a killed recording keeps every finished frame.
+in SWMR mode and flushed after every frame (every group of frames that waited for the writer):
+a killed recording keeps every frame flushed before it.
 --depth every:N records the GPU cull's depth buffers (one per triangle-level view, read back
 after its forward pass) on every frame whose index is a multiple of N, with methods that run
 the GPU cull (/gpu/depth: uint16, compressed); the cull's per-pass state, its surviving

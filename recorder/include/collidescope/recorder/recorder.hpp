@@ -3,8 +3,8 @@
 /// docs/recording.md).
 ///
 /// on_frame runs on the engine's thread and only copies the frame into a bounded queue; a
-/// writer thread appends it to the file and flushes, frame by frame, in SWMR mode, so a killed
-/// process leaves every finished frame readable. Not thread-safe: one engine thread calls it.
+/// writer thread appends the frames waiting to the file and flushes, in SWMR mode, so a killed
+/// process leaves every frame flushed before it readable. Not thread-safe: one engine thread calls it.
 
 #include "collidescope/trace.hpp"
 
