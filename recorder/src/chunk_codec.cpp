@@ -35,7 +35,7 @@ void shuffle(std::span<const std::byte> raw, std::size_t element_size, unsigned 
         }
     }
     const std::size_t whole = elements * element_size;
-    std::memcpy(out + whole, in + whole, raw.size() - whole);
+    if (raw.size() > whole) std::memcpy(out + whole, in + whole, raw.size() - whole);  // never with null
 }
 
 class Deflater {
@@ -132,7 +132,7 @@ ChunkEncoding encode_shuffle_deflate(std::span<const std::byte> raw, std::size_t
     std::span<const std::byte> whole = raw;
     if (chunk_size > raw.size()) {
         padded.resize(chunk_size);
-        std::memcpy(padded.data(), raw.data(), raw.size());
+        if (!raw.empty()) std::memcpy(padded.data(), raw.data(), raw.size());  // raw.data() may be null
         std::memset(padded.data() + raw.size(), 0, chunk_size - raw.size());
         whole = padded;
     }

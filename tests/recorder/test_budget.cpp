@@ -75,7 +75,9 @@ TEST_F(DepthBudget, ThenPositions) {
     for (std::uint64_t r = 0; r < rec.frames_complete(); ++r) {
         without_positions += rec.positions(0, r).empty() ? 1 : 0;
         // Positions only go once no depth image is kept any more.
-        if (rec.positions(0, r).empty()) EXPECT_TRUE(rec.depth_images(r).empty()) << "row " << r;
+        if (rec.positions(0, r).empty()) {
+            EXPECT_TRUE(rec.depth_images(r).empty()) << "row " << r;
+        }
     }
     EXPECT_GT(without_positions, 0u);
 }
