@@ -10,6 +10,9 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include <cmath>
+#include <random>
+
 namespace collidescope::testing {
 
 std::uint64_t frames_complete_now(const std::filesystem::path& file) {
@@ -104,6 +107,20 @@ Scene crossing_sheets(std::uint32_t cells, std::uint32_t frames) {
     Scene scene;
     scene.name = "crossing_sheets";
     scene.source = make_memory_source({"flat", "upright"}, std::move(meshes));
+    return scene;
+}
+
+Scene varying_vertex_counts(std::uint64_t seed, std::uint32_t frames) {
+    std::mt19937_64 rng(seed);
+    std::vector<std::vector<MeshData>> meshes;
+    for (std::uint32_t f = 0; f < frames; ++f) {
+        const std::uint32_t cells = f == 0 ? 5 : std::uniform_int_distribution<std::uint32_t>(1, 12)(rng);
+        const double wave = 0.37 * f;
+        meshes.push_back({translated(grid_sheet(cells, 1.0), Vec3(0.01 * wave, 0.3, std::sin(wave))), grid_sheet(4, 1.0)});
+    }
+    Scene scene;
+    scene.name = "vertex-counts";
+    scene.source = make_memory_source({"changing", "fixed"}, std::move(meshes));
     return scene;
 }
 

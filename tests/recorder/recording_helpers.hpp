@@ -42,6 +42,11 @@ std::vector<CapturedFrame> record_in_process(const Scene& scene, const std::file
 /// upright, sweeping through it along y over `frames` frames (apart, crossing, apart).
 Scene crossing_sheets(std::uint32_t cells, std::uint32_t frames);
 
+/// Two objects over `frames` frames: "changing", a grid sheet of 5 x 5 cells at frame 0 and of
+/// 1 to 12 cells (drawn from `seed`) after, moving; "fixed", a 4 x 4 sheet. Vertex counts above
+/// and below the first frame's, which sizes the recording's positions chunks.
+Scene varying_vertex_counts(std::uint64_t seed, std::uint32_t frames);
+
 /// Overwrites element `index` of a 1-D integer dataset.
 void overwrite_u64(const std::filesystem::path& file, const std::string& dataset, std::uint64_t index,
                    std::uint64_t value);

@@ -16,10 +16,8 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
-#include <cmath>
 #include <csignal>
 #include <map>
-#include <random>
 #include <regex>
 
 #include <sys/resource.h>
@@ -122,16 +120,7 @@ TEST(GroupCommit, WritesWhatSingleFramesWrite) {
 TEST(GroupCommit, WritesWhatSingleFramesWriteWhenVertexCountsChange) {
     const std::uint64_t seed = 78;
     std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
-    std::mt19937_64 rng(seed);
-    std::vector<std::vector<MeshData>> meshes;
-    for (std::uint32_t f = 0; f < 30; ++f) {
-        const std::uint32_t cells = f == 0 ? 5 : std::uniform_int_distribution<std::uint32_t>(1, 12)(rng);
-        meshes.push_back({testing::translated(testing::grid_sheet(cells, 1.0), Vec3(0.1, 0.2, std::sin(0.3 * f))),
-                          testing::grid_sheet(4, 1.0)});
-    }
-    Scene scene;
-    scene.name = "vertex-counts";
-    scene.source = make_memory_source({"changing", "fixed"}, std::move(meshes));
+    const Scene scene = testing::varying_vertex_counts(seed, 30);
     expect_group_commit_writes_what_single_frames_write(scene, 30);
 }
 

@@ -15,9 +15,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <cmath>
 #include <cstdio>
-#include <random>
 #include <sstream>
 
 namespace collidescope {
@@ -116,18 +114,8 @@ TEST(RecorderRoundTrip, TopologyChangesAreRecordedFromTheirFrame) {
 TEST(RecorderRoundTrip, PositionsOfEveryVertexCountComeBackExactly) {
     const std::uint64_t seed = 77;
     std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
-    std::mt19937_64 rng(seed);
     TempDir dir;
-    std::vector<std::vector<MeshData>> meshes;
-    for (std::uint32_t f = 0; f < 40; ++f) {
-        const std::uint32_t cells = f == 0 ? 5 : std::uniform_int_distribution<std::uint32_t>(1, 12)(rng);
-        const double wave = 0.37 * f;
-        meshes.push_back({testing::translated(testing::grid_sheet(cells, 1.0), Vec3(0.01 * wave, 0.3, std::sin(wave))),
-                          testing::grid_sheet(4, 1.0)});
-    }
-    Scene scene;
-    scene.name = "vertex-counts";
-    scene.source = make_memory_source({"changing", "fixed"}, std::move(meshes));
+    const Scene scene = testing::varying_vertex_counts(seed, 40);
     const auto frames = testing::record_in_process(scene, dir.path() / "counts.h5", 0, 40, false);
     const recorder::Recording rec(dir.path() / "counts.h5");
     expect_recording_equals(rec, frames);
