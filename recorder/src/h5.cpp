@@ -217,39 +217,40 @@ Id create_extensible(const Where& where, hid_t loc, const std::string& path, con
 
 namespace {
 
-/// Columns of a rank 1 or 2 dataset (1 for rank 1).
-hsize_t width_of(const Where& where, hid_t dataset, const std::string& path) {
-    const Id space = where.own(H5Dget_space(dataset), H5Sclose, "cannot read the shape of " + path);
-    const int rank = H5Sget_simple_extent_ndims(space.get());
+/// Rank (1 or 2) and dims (dims[1] = 1 for rank 1) of a dataset's current extent, in `space`.
+struct Extent {
+    Id space;
+    int rank = 0;
     hsize_t dims[2] = {0, 1};
-    if (rank < 1 || rank > 2 || H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0) {
+};
+
+Extent extent_of(const Where& where, hid_t dataset, const std::string& path) {
+    Extent extent;
+    extent.space = where.own(H5Dget_space(dataset), H5Sclose, "cannot read the shape of " + path);
+    extent.rank = H5Sget_simple_extent_ndims(extent.space.get());
+    if (extent.rank < 1 || extent.rank > 2 || H5Sget_simple_extent_dims(extent.space.get(), extent.dims, nullptr) < 0) {
         where.fail("cannot read the shape of " + path);
     }
-    return dims[1];
+    return extent;
 }
 
 }  // namespace
 
 void extend(const Where& where, hid_t dataset, const std::string& path, hsize_t rows) {
-    const hsize_t new_dims[2] = {rows, width_of(where, dataset, path)};
+    const hsize_t new_dims[2] = {rows, extent_of(where, dataset, path).dims[1]};
     where.check(H5Dset_extent(dataset, new_dims), "cannot extend " + path);
 }
 
 void write_rows(const Where& where, hid_t dataset, const std::string& path, hsize_t first, hid_t mem_type, hsize_t rows,
                 const void* data) {
     if (rows == 0) return;
-    const Id file_space = where.own(H5Dget_space(dataset), H5Sclose, "cannot read the shape of " + path);
-    const int rank = H5Sget_simple_extent_ndims(file_space.get());
-    hsize_t dims[2] = {0, 1};
-    if (rank < 1 || rank > 2 || H5Sget_simple_extent_dims(file_space.get(), dims, nullptr) < 0) {
-        where.fail("cannot read the shape of " + path);
-    }
+    const Extent file = extent_of(where, dataset, path);
     const hsize_t start[2] = {first, 0};
-    const hsize_t count[2] = {rows, dims[1]};
-    where.check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
+    const hsize_t count[2] = {rows, file.dims[1]};
+    where.check(H5Sselect_hyperslab(file.space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
                 "cannot select rows of " + path);
-    const Id mem_space = where.own(H5Screate_simple(rank, count, nullptr), H5Sclose, "cannot make a dataspace");
-    where.check(H5Dwrite(dataset, mem_type, mem_space.get(), file_space.get(), H5P_DEFAULT, data),
+    const Id mem_space = where.own(H5Screate_simple(file.rank, count, nullptr), H5Sclose, "cannot make a dataspace");
+    where.check(H5Dwrite(dataset, mem_type, mem_space.get(), file.space.get(), H5P_DEFAULT, data),
                 "cannot write " + path);
 }
 
