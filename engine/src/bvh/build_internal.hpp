@@ -12,7 +12,7 @@ namespace collidescope::bvh::detail {
 
 /// Per-triangle boxes and centroids, computed once per build in parallel.
 struct BuildInput {
-    std::vector<Aabb> boxes;
+    std::vector<Aabb> boxes;  ///< empty unless asked for (make_build_input)
     std::vector<std::array<double, 3>> centroids;  ///< box centres (only steer the splits)
     Aabb centroid_bounds;
 };
@@ -35,7 +35,9 @@ struct RawTree {
     std::uint32_t allocate_pair() { return used.fetch_add(2, std::memory_order_relaxed); }
 };
 
-BuildInput make_build_input(std::span<const TriIndices> triangles, std::span<const Vec3> vertices);
+/// The triangles' centroids and their bounds; their boxes too when `with_boxes` (the SAH
+/// builder bins them; the LBVH builder needs centroids only).
+BuildInput make_build_input(std::span<const TriIndices> triangles, std::span<const Vec3> vertices, bool with_boxes);
 
 /// Top-down binned SAH build into `raw` (nodes sized 2n - 1, ids 0..n-1 on entry).
 void build_sah(const BuildInput& input, const BuildConfig& config, RawTree& raw);

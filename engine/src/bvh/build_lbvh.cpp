@@ -1,15 +1,15 @@
 // Linear BVH build (Lauterbach et al. 2009, Karras 2012): 63-bit Morton codes of the
-// triangle centroids (21 bits per axis over the centroid bounds), sorted in parallel with the
+// triangle centroids (21 bits per axis over the centroid bounds), radix-sorted with the
 // triangle index as tie-break (so the order is unique and thread-independent), then split
 // top-down at the highest bit in which a range's first and last codes differ (a binary
 // search); equal codes split in the middle. Boxes come from the refit that follows.
 
 #include "bvh/build_internal.hpp"
+#include "bvh/radix_sort.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
-#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <bit>
@@ -30,23 +30,14 @@ std::uint64_t spread_bits(std::uint64_t x) {
     return x;
 }
 
-struct Keyed {
-    std::uint64_t code;
-    std::uint32_t id;
-
-    friend bool operator<(const Keyed& a, const Keyed& b) {
-        return a.code != b.code ? a.code < b.code : a.id < b.id;
-    }
-};
-
-std::vector<Keyed> sorted_codes(const BuildInput& input) {
+std::vector<MortonKey> sorted_codes(const BuildInput& input) {
     const Aabb& bounds = input.centroid_bounds;
     std::array<double, 3> scale{};
     for (int k = 0; k < 3; ++k) {
         const double extent = bounds.hi[k] - bounds.lo[k];
         scale[k] = extent > 0 ? static_cast<double>(k_cells) / extent : 0;
     }
-    std::vector<Keyed> keys(input.centroids.size());
+    std::vector<MortonKey> keys(input.centroids.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, keys.size(), 4096),
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
@@ -57,13 +48,14 @@ std::vector<Keyed> sorted_codes(const BuildInput& input) {
             keys[i] = {code, static_cast<std::uint32_t>(i)};
         }
     });
-    tbb::parallel_sort(keys.begin(), keys.end());
+    std::vector<MortonKey> scratch;
+    radix_sort(keys, scratch);
     return keys;
 }
 
 class LbvhBuilder {
 public:
-    LbvhBuilder(const std::vector<Keyed>& keys, const BuildConfig& config, RawTree& raw)
+    LbvhBuilder(const std::vector<MortonKey>& keys, const BuildConfig& config, RawTree& raw)
         : m_keys(keys), m_config(config), m_raw(raw) {}
 
     void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end) {
@@ -93,11 +85,11 @@ private:
         const int bit = 63 - std::countl_zero(first ^ last);
         const std::uint64_t mask = std::uint64_t{1} << bit;
         const auto it = std::partition_point(m_keys.begin() + begin, m_keys.begin() + end,
-                                             [&](const Keyed& k) { return (k.code & mask) == 0; });
+                                             [&](const MortonKey& k) { return (k.code & mask) == 0; });
         return static_cast<std::uint32_t>(it - m_keys.begin());
     }
 
-    const std::vector<Keyed>& m_keys;
+    const std::vector<MortonKey>& m_keys;
     const BuildConfig& m_config;
     RawTree& m_raw;
 };
@@ -105,7 +97,7 @@ private:
 }  // namespace
 
 void build_lbvh(const BuildInput& input, const BuildConfig& config, RawTree& raw) {
-    const std::vector<Keyed> keys = sorted_codes(input);
+    const std::vector<MortonKey> keys = sorted_codes(input);
     for (std::size_t i = 0; i < keys.size(); ++i) raw.ids[i] = keys[i].id;
     LbvhBuilder builder(keys, config, raw);
     builder.build(0, 0, static_cast<std::uint32_t>(keys.size()));
