@@ -5,6 +5,7 @@
 #include "bvh/radix_sort.hpp"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <random>
@@ -41,6 +42,22 @@ TEST(RadixSort, SortsLikeStdSortWithTheIndexAsTieBreak) {
                                    size + ", two digits vary");
         expect_sorts_like_std_sort(keys_of(n, [] { return std::uint64_t{42}; }), size + ", one code");
         expect_sorts_like_std_sort(keys_of(n, [&] { return ~std::uint64_t{0} - rng() % 2; }), size + ", all bits set");
+    }
+}
+
+// Large inputs sort in blocks on TBB's threads: the same result for every thread count.
+TEST(RadixSort, SortsInBlocksOnAnyThreadCountLikeStdSort) {
+    const std::uint64_t seed = 0x5eed'b10c;
+    std::printf("seed %#llx\n", static_cast<unsigned long long>(seed));
+    std::mt19937_64 rng(seed);
+    const std::vector<MortonKey> many_codes = keys_of(300000, [&] { return rng() >> 1; });
+    const std::vector<MortonKey> few_codes = keys_of(300000, [&] { return (rng() % 1000) << 30; });
+    for (const int threads : {1, 2, 4}) {
+        tbb::task_arena arena(threads);
+        arena.execute([&] {
+            expect_sorts_like_std_sort(many_codes, std::to_string(threads) + " threads, 63-bit codes");
+            expect_sorts_like_std_sort(few_codes, std::to_string(threads) + " threads, 1000 codes");
+        });
     }
 }
 
