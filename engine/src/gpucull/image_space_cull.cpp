@@ -65,8 +65,10 @@ ViewSet make_view_set(const Frame& frame, const std::vector<PcsObject>& pcs, int
 }
 
 // Issues one pass: each object (in pass order) is tested against the depth of the objects
-// drawn before it, then drawn. The first object meets an empty buffer and needs no test.
-void issue_pass(const ViewSet& set, Level level, bool reverse, const CullPlan& plan,
+// drawn before it, then drawn. The first object meets an empty buffer and needs no test; the
+// last one is tested by no object after it, so it is drawn only when the depth buffer is read
+// back for the trace (`keep_depth`): a third of the pass's rasterisation with two objects.
+void issue_pass(const ViewSet& set, Level level, bool reverse, bool keep_depth, const CullPlan& plan,
                 CullRenderer& renderer, GpuPassInfo& pass) {
     const std::size_t n = set.first.size() - 1;
     renderer.clear_depth();
@@ -85,7 +87,7 @@ void issue_pass(const ViewSet& set, Level level, bool reverse, const CullPlan& p
             }
             pass.items_tested += level == Objects ? 1 : count;
         }
-        renderer.draw_occluders(first, count);
+        if (i + 1 < n || keep_depth) renderer.draw_occluders(first, count);
     }
 }
 
@@ -167,12 +169,13 @@ void cull_view(const Frame& frame, std::vector<PcsObject>& pcs, Level level, int
     std::vector<std::uint8_t> hidden[2];
     for (const bool reverse : {false, true}) {
         GpuPassInfo pass{level, static_cast<std::uint8_t>(axis), static_cast<std::uint8_t>(reverse)};
-        issue_pass(set, level, reverse, plan, renderer, pass);
+        const bool keep_depth = level == Triangles && !reverse && plan.capture_depth;
+        issue_pass(set, level, reverse, keep_depth, plan, renderer, pass);
         times.render += stopwatch.lap_ms();
         hidden[reverse].assign(set.quads.size(), 0);
         read_pass(set, level, reverse, plan, renderer, pass, hidden[reverse]);
         // Testers leave the depth buffer as the occluders wrote it: every PCS triangle drawn.
-        if (level == Triangles && !reverse && plan.capture_depth) info.depth_images.push_back(capture_depth(set.view, renderer));
+        if (keep_depth) info.depth_images.push_back(capture_depth(set.view, renderer));
         times.readback += stopwatch.lap_ms();
         info.queries += pass.queries;
         info.passes.push_back(pass);
