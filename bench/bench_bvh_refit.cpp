@@ -6,7 +6,9 @@
 //   build-bvh/bench/bench_bvh_refit [--benchmark_repetitions=5]
 //
 // Counters: refit_ns_per_tri, floor_ns_per_tri, ratio (refit / floor), nodes, and the
-// refit tree's quality (SAH cost relative to the build) on the deformed positions.
+// refit tree's quality (SAH cost relative to the build) on the deformed positions; and two
+// gather floors (the corner gathers alone, in leaf order and in the input's triangle order)
+// with refit_per_leaf_gather (refit / the leaf-order gather floor).
 // Meshes: a 1M-triangle grid sheet (a deforming cloth: connectivity kept, vertices waved)
 // and the E4 data set's dragon (default preset, 47,794 triangles), vertices jittered.
 
@@ -78,6 +80,22 @@ void stream_floor(std::span<const Vec3> vertices, std::vector<bvh::Node>& nodes)
     });
 }
 
+// Gather floors, diagnostic: the corner gathers any refit over these triangles must make, and
+// nothing else. Each reads every triangle's three vertices through its index triple, in the
+// order given (the tree's leaf order, or the input's triangle order), and keeps one running
+// box per parallel chunk (so the loads cannot be dropped). Refit / gather floor says what
+// refit costs beyond its gathers; gather floor / streaming floor what the gathers cost beyond
+// reading each vertex once in order.
+void gather_floor(std::span<const TriIndices> triangles, std::span<const Vec3> vertices, std::vector<bvh::Node>& nodes) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles.size(), 8192), [&](const tbb::blocked_range<std::size_t>& r) {
+        bvh::Aabb box;
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+            for (const std::uint32_t v : triangles[i]) box.grow(vertices[v]);
+        }
+        nodes[r.begin() / 8192].box = box;
+    });
+}
+
 double ms_since(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
@@ -89,6 +107,8 @@ void run_refit(benchmark::State& state, Mesh& mesh) {
     std::vector<bvh::Node> floor_nodes(tree.nodes.size());
     double refit_ms = 0;
     double floor_ms = 0;
+    double leaf_gather_ms = 0;
+    double input_gather_ms = 0;
     double quality = 0;
     std::size_t k = 0;
     for (auto _ : state) {
@@ -96,6 +116,12 @@ void run_refit(benchmark::State& state, Mesh& mesh) {
         Clock::time_point start = Clock::now();
         stream_floor(vertices, floor_nodes);
         floor_ms += ms_since(start);
+        start = Clock::now();
+        gather_floor(tree.leaf_triangles, vertices, floor_nodes);
+        leaf_gather_ms += ms_since(start);
+        start = Clock::now();
+        gather_floor(mesh.triangles, vertices, floor_nodes);
+        input_gather_ms += ms_since(start);
         start = Clock::now();
         quality = bvh::refit(tree, mesh.triangles, vertices).quality;
         refit_ms += ms_since(start);
@@ -106,6 +132,9 @@ void run_refit(benchmark::State& state, Mesh& mesh) {
     state.counters["refit_ns_per_tri"] = refit_ms * per_tri;
     state.counters["floor_ns_per_tri"] = floor_ms * per_tri;
     state.counters["ratio"] = refit_ms / floor_ms;
+    state.counters["leaf_gather_ns_per_tri"] = leaf_gather_ms * per_tri;
+    state.counters["input_gather_ns_per_tri"] = input_gather_ms * per_tri;
+    state.counters["refit_per_leaf_gather"] = refit_ms / leaf_gather_ms;
     state.counters["nodes"] = static_cast<double>(tree.nodes.size());
     state.counters["quality"] = quality;
 }
