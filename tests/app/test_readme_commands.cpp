@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 
@@ -40,19 +41,47 @@ std::vector<std::string> lines_of(const std::filesystem::path& file) {
     return lines;
 }
 
-TEST(ReadmeCommands, CiRunsTheTestCommandVerbatim) {
-    const std::string command = readme_command("readme-command-b");
-    ASSERT_NE(command, "");
-    EXPECT_NE(command.find("ctest"), std::string::npos) << command;
+// The lines a command prints on stdout (its exit status must be 0).
+std::vector<std::string> output_lines(const std::string& command) {
+    std::vector<std::string> lines;
+    FILE* pipe = ::popen(command.c_str(), "r");
+    if (pipe == nullptr) return lines;
+    std::string text;
+    char buffer[4096];
+    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) text.append(buffer, n);
+    const int status = ::pclose(pipe);
+    EXPECT_EQ(status, 0) << command;
+    std::istringstream stream(text);
+    for (std::string line; std::getline(stream, line);) lines.push_back(line);
+    return lines;
+}
+
+// CI runs README's two commands on a bare Debian 12 system: .ci/run ends with the
+// fresh-machine script, and what that script runs is exactly README's (a) and (b).
+TEST(ReadmeCommands, CiRunsBothCommandsVerbatimOnAFreshMachine) {
+    const std::string main_job = readme_command("readme-command-a");
+    const std::string tests = readme_command("readme-command-b");
+    ASSERT_NE(main_job, "");
+    ASSERT_NE(tests, "");
+    EXPECT_NE(tests.find("ctest"), std::string::npos) << tests;
     const std::vector<std::string> ci = lines_of(k_source_dir / ".ci/run");
     ASSERT_GE(ci.size(), 3u);
     EXPECT_EQ(ci.front(), "#!/usr/bin/env bash");
     EXPECT_NE(std::find(ci.begin(), ci.end(), "set -euo pipefail"), ci.end());
-    EXPECT_EQ(ci.back(), command) << ".ci/run must end with README's command (b)";
+    EXPECT_EQ(ci.back(), "scripts/fresh-machine.sh --commands a,b")
+        << ".ci/run must end by running README's commands (a) and (b) on a fresh machine";
+    const std::string script = (k_source_dir / "scripts/fresh-machine.sh").string();
+    EXPECT_EQ(output_lines(script + " --commands a,b --print-commands"),
+              (std::vector<std::string>{main_job, tests}));
+    // The set-up part of (a) is the command up to the build of the binary it then runs.
+    const std::vector<std::string> setup = output_lines(script + " --commands a-setup --print-commands");
+    ASSERT_EQ(setup.size(), 1u);
+    EXPECT_EQ(main_job.rfind(setup[0] + " && build/app/collidescope ", 0), 0u) << setup[0];
+    EXPECT_NE(setup[0].find("--target collidescope"), std::string::npos) << setup[0];
 }
 
 TEST(ReadmeCommands, ScriptsAreExecutable) {
-    for (const char* script : {".ci/run", "scripts/setup.sh", "scripts/sanitize.sh"}) {
+    for (const char* script : {".ci/run", "scripts/setup.sh", "scripts/sanitize.sh", "scripts/fresh-machine.sh"}) {
         struct stat info {};
         ASSERT_EQ(::stat((k_source_dir / script).c_str(), &info), 0) << script;
         EXPECT_NE(info.st_mode & S_IXUSR, 0u) << script << " is not executable";
