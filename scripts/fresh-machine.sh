@@ -205,8 +205,8 @@ fi
 
 # A fresh clone of HEAD (committed work only), as a new user would get it.
 checkout=/root/collidescope
-git clone -q --no-hardlinks "$repo" "$root$checkout"
-git -C "$root$checkout" checkout -q --detach "$(git -C "$repo" rev-parse HEAD)"
+git -c advice.detachedHead=false clone -q --no-hardlinks "$repo" "$root$checkout"
+git -C "$root$checkout" -c advice.detachedHead=false checkout -q --detach "$(git -C "$repo" rev-parse HEAD)"
 log "cloned HEAD $head into $checkout"
 
 # --- the commands ------------------------------------------------------------------------------
