@@ -190,5 +190,34 @@ TEST(DegenerateSets, SelfRuleMatchesRationalReference) {
     }
 }
 
+/// Coplanar pairs sharing one vertex (the flat-cloth case the self rule's coplanar shortcut
+/// decides from the cones at v), on the two exactly planar pools, both argument orders.
+TEST(DegenerateSets, CoplanarSharedVertexPairsMatchRationalReference) {
+    const std::uint64_t seed = 0xC0C0;
+    std::mt19937_64 rng(seed);
+    for (const PointPool& pool : degenerate_pools()) {
+        if (pool.kind != "axis-aligned plane" && pool.kind != "tilted lattice plane") continue;
+        std::uniform_int_distribution<std::size_t> pick(0, pool.points.size() - 1);
+        int hits = 0;
+        const int count = 4000;
+        for (int n = 0; n < count; ++n) {
+            const Vec3 v = pool.points[pick(rng)];
+            const std::array<Vec3, 3> pa{v, pool.points[pick(rng)], pool.points[pick(rng)]};
+            const std::array<Vec3, 3> pb{v, pool.points[pick(rng)], pool.points[pick(rng)]};
+            const TriIndices ia{0, 1, 2}, ib{0, 3, 4};
+            const bool expected = reference_self_collide(ia, pa, ib, pb);
+            ASSERT_EQ(self_triangles_collide(ia, pa, ib, pb), expected)
+                << "seed " << seed << " pool " << pool.kind << " case " << n << ": " << describe(pa, pb);
+            ASSERT_EQ(self_triangles_collide(ib, pb, ia, pa), expected)
+                << "seed " << seed << " pool " << pool.kind << " case " << n << " (swapped)";
+            hits += expected;
+        }
+        std::printf("pool %s: %d coplanar shared-vertex pairs, collide rate %.3f\n", pool.kind.c_str(),
+                    count, double(hits) / count);
+        EXPECT_GT(hits, count / 10) << pool.kind;
+        EXPECT_LT(hits, count - count / 10) << pool.kind;
+    }
+}
+
 }  // namespace
 }  // namespace collidescope
