@@ -151,7 +151,9 @@ TEST(BruteMethod, CountsAreConsistent) {
 
 TEST(BruteMethod, CountsExactFallbacks) {
     // Coplanar overlapping triangles in a tilted plane: the float filter cannot decide the
-    // zero orientations, so the exact path must run and be counted.
+    // zero orientations. With small integer coordinates every product is exact, so the cheap
+    // exact stage decides them (counted as shortcuts); with decimal coordinates that round,
+    // the expansions must run (counted as fallbacks).
     MeshData a;  // in the plane z = x + y
     a.vertices = {{0, 0, 0}, {3, 0, 3}, {0, 3, 3}};
     a.triangles = {{0, 1, 2}};
@@ -160,7 +162,14 @@ TEST(BruteMethod, CountsExactFallbacks) {
     b.triangles = {{0, 1, 2}};
     const BruteRun run = run_brute(make_frame({a, b}), false);
     EXPECT_EQ(run.pairs.size(), 1u);
-    EXPECT_GT(run.stats.counts.exact_fallbacks, 0u);
+    EXPECT_GT(run.stats.counts.exact_shortcuts, 0u);
+    EXPECT_EQ(run.stats.counts.exact_fallbacks, 0u);
+
+    MeshData c;  // nearly in that plane: z = x + y rounded, products that round
+    c.vertices = {{0.1, 0.7, 0.1 + 0.7}, {2.3, 0.3, 2.3 + 0.3}, {0.3, 1.9, 0.3 + 1.9}};
+    c.triangles = {{0, 1, 2}};
+    const BruteRun near = run_brute(make_frame({a, c}), false);
+    EXPECT_GT(near.stats.counts.exact_fallbacks, 0u);
 }
 
 TEST(BruteMethod, TestsOnlyTheGivenObjectPairs) {

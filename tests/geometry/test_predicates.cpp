@@ -80,9 +80,14 @@ TEST(Predicates, CountersSeeFallbacks) {
     const PredicateCounters before = predicate_counters();
     const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
     orient3d(a, b, c, Vec3(0.25, 0.25, 1));  // decided by the filter
-    orient3d(a, b, c, Vec3(0.25, 0.25, 0));  // exactly coplanar: exact path
+    orient3d(a, b, c, Vec3(0.25, 0.25, 0));  // coplanar, every product exact: cheap stage
+    // Coplanar in a tilted plane with products that round: only the exact path decides.
+    const Vec3 p(0.1, 0.2, 0.3), q(0.7, 0.11, 0.5), r(0.3, 0.9, 0.13);
+    const Vec3 m = p + 0.5 * (q - p);
+    EXPECT_EQ(orient3d(p, q, r, m), reference_orient3d(p, q, r, m));
     const PredicateCounters after = predicate_counters();
     EXPECT_EQ(after.filtered - before.filtered, 1u);
+    EXPECT_EQ(after.shortcut - before.shortcut, 1u);
     EXPECT_EQ(after.exact - before.exact, 1u);
 }
 

@@ -5,7 +5,9 @@
 /// are `A` (two bunnies), `B` (waving cloths), `C` (sine-wave sheets), `D` (BART-like soup that
 /// assembles), `E1`-`E4` (exploding dragons, fastest to slowest), each with the presets
 /// `default`, `small` and `large` (docs/datasets.md has their sizes); `demo` is a small
-/// torus-and-sheet scene. Longer aliases (`bunnies`, `cloths`, `sine-sheets`, `bart`,
+/// torus-and-sheet scene. The cloth family (`cloth-rest`, `cloth-drape`, `cloth-crumple`,
+/// `cloth-slide`, the same three presets, self-collision on) stresses self-contact and exactly
+/// coplanar contact. Longer aliases (`bunnies`, `cloths`, `sine-sheets`, `bart`,
 /// `dragon-fastest` .. `dragon-slowest`) name the same scenes.
 
 #include "collidescope/scene.hpp"
@@ -20,7 +22,8 @@ namespace collidescope {
 /// Throws InputError naming the known scenes (or the scene's known presets) on an unknown one.
 Scene make_builtin_scene(std::string_view spec);
 
-/// The built-in scene names (canonical, not aliases), in a stable order: A, B, C, D, E1-E4, demo.
+/// The built-in scene names (canonical, not aliases), in a stable order: A, B, C, D, E1-E4, demo,
+/// cloth-rest, cloth-drape, cloth-crumple, cloth-slide.
 std::vector<std::string> builtin_scene_names();
 
 /// The presets of built-in scene `name`, default first. Throws InputError on an unknown name.

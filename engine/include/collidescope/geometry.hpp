@@ -2,8 +2,10 @@
 /// Exact geometric predicates and the triangle-triangle test (engine/src/geometry).
 ///
 /// Every function here decides exactly on its double inputs: a floating-point filter with a
-/// static error bound answers most calls, and an exact fallback (expansion arithmetic, with
-/// GMP rationals where expansions could underflow or overflow) answers the rest. No epsilon.
+/// static error bound answers most calls, cheap exact arguments (a repeated point; a
+/// determinant whose every operation is exact in doubles) most of the rest, and an exact
+/// fallback (expansion arithmetic, with GMP rationals where expansions could underflow or
+/// overflow) what is left. No epsilon.
 /// All functions are pure and thread-safe.
 
 #include "collidescope/types.hpp"
@@ -33,11 +35,13 @@ bool triangles_intersect(const Vec3& a0, const Vec3& a1, const Vec3& a2,
 bool self_triangles_collide(const TriIndices& ia, const std::array<Vec3, 3>& pa,
                             const TriIndices& ib, const std::array<Vec3, 3>& pb);
 
-/// Counters of the exact fallback, per calling thread. The narrow phase reads the difference
-/// around its work to report how many predicate calls the filter could not decide.
+/// Counters of the predicates' stages, per calling thread. The narrow phase reads the
+/// difference around its work to report how many predicate calls needed the exact fallback.
 struct PredicateCounters {
     std::uint64_t filtered = 0;  ///< predicate calls decided by the floating-point filter
-    std::uint64_t exact = 0;     ///< predicate calls that needed the exact fallback
+    std::uint64_t shortcut = 0;  ///< calls the filter left open, decided exactly without
+                                 ///< expansions (a repeated point; an exact double evaluation)
+    std::uint64_t exact = 0;     ///< calls that needed the exact fallback (expansions or GMP)
 };
 
 /// The calling thread's counters (monotonic; never reset by the library).

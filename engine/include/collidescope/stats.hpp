@@ -38,10 +38,12 @@ struct FrameCounts {
     std::uint64_t box_tests = 0;         ///< triangle or node box tests by the method
     std::uint64_t candidate_pairs = 0;   ///< pairs that survived culling
     std::uint64_t exact_tests = 0;       ///< triangle-triangle tests run
-    std::uint64_t exact_fallbacks = 0;   ///< predicate calls the float filter could not decide
+    std::uint64_t exact_fallbacks = 0;   ///< predicate calls that needed expansions or GMP
     std::uint64_t colliding_pairs = 0;   ///< confirmed pairs
     std::uint64_t nodes_visited = 0;     ///< hierarchy node pairs tested + self nodes entered (Mode 1)
     std::uint64_t rebuilds = 0;          ///< hierarchies built this frame, engine thread or worker (Mode 1)
+    std::uint64_t exact_shortcuts = 0;   ///< predicate calls the float filter left open and the
+                                         ///< cheap exact stage decided (no expansions)
 };
 
 /// Calls `visit(name, milliseconds)` for every StageTimes field in declaration order. This
@@ -74,6 +76,7 @@ void for_each_count(const FrameCounts& counts, Visitor&& visit) {
     visit("colliding_pairs", counts.colliding_pairs);
     visit("nodes_visited", counts.nodes_visited);
     visit("rebuilds", counts.rebuilds);
+    visit("exact_shortcuts", counts.exact_shortcuts);
 }
 
 /// Bits of AabbFrameInfo::rebuild_reasons (the same values as bvh::RebuildReason).

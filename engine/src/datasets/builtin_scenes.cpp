@@ -29,9 +29,15 @@ Scene make_C(const std::string& preset) { return datasets::make_scene_C(preset, 
 Scene make_D(const std::string& preset) { return datasets::make_scene_D(preset, k_dataset_seed); }
 template <int speed>
 Scene make_E(const std::string& preset) { return datasets::make_scene_E(speed, preset, k_dataset_seed); }
+template <const char* name>
+Scene make_cloth(const std::string& preset) { return datasets::make_cloth_scene(name, preset, k_dataset_seed); }
+constexpr char k_cloth_rest[] = "cloth-rest";
+constexpr char k_cloth_drape[] = "cloth-drape";
+constexpr char k_cloth_crumple[] = "cloth-crumple";
+constexpr char k_cloth_slide[] = "cloth-slide";
 
-// In the order builtin_scene_names() lists them: the thesis's data sets (chapter 5), then the
-// demo. Aliases are listed by builtin_scene_names() too, after the canonical names.
+// In the order builtin_scene_names() lists them: the thesis's data sets (chapter 5), the
+// demo, then the cloth family (issue 23). Aliases are listed by builtin_scene_names() too, after the canonical names.
 constexpr SceneEntry k_scenes[] = {
     {"A", &dataset_presets, &make_A},
     {"B", &dataset_presets, &make_B},
@@ -42,6 +48,10 @@ constexpr SceneEntry k_scenes[] = {
     {"E3", &dataset_presets, &make_E<3>},
     {"E4", &dataset_presets, &make_E<4>},
     {"demo", &demo_presets, &make_demo},
+    {k_cloth_rest, &dataset_presets, &make_cloth<k_cloth_rest>},
+    {k_cloth_drape, &dataset_presets, &make_cloth<k_cloth_drape>},
+    {k_cloth_crumple, &dataset_presets, &make_cloth<k_cloth_crumple>},
+    {k_cloth_slide, &dataset_presets, &make_cloth<k_cloth_slide>},
 };
 
 // Longer names for the data sets, resolved to the canonical ones.

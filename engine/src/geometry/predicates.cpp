@@ -1,11 +1,14 @@
-// orient3d and orient2d: a static floating-point filter, then an exact fallback.
+// orient3d and orient2d: a static floating-point filter, then cheap exact arguments, then an
+// exact fallback.
 //
 // Filter: the determinant in doubles plus an error bound proportional to its permanent
 // (Shewchuk 1997, orient3d errboundA = (7 + 56 eps) eps, orient2d ccwerrboundA =
 // (3 + 16 eps) eps); we use 8 eps and 4 eps plus an absolute term, which also covers
-// gradual underflow in the products. Exact path: the determinant as an expansion when every
-// coordinate's magnitude lies in [kSafeMin, kSafeMax] (or is zero), where
-// no intermediate can underflow or overflow; GMP rationals otherwise.
+// gradual underflow in the products. Cheap exact stage (no expansions; orient3d_cheap says
+// why each argument is exact): a repeated point gives 0 symbolically, and a determinant whose
+// every operation is exact in doubles is read off its double value. Exact path: the
+// determinant as an expansion when every coordinate's magnitude lies in [kSafeMin, kSafeMax]
+// (or is zero), where no intermediate can underflow or overflow; GMP rationals otherwise.
 
 #include "collidescope/geometry.hpp"
 #include "geometry/expansion.hpp"
@@ -30,9 +33,83 @@ constexpr double kSafeMin = 0x1p-200;
 constexpr double kSafeMax = 0x1p200;
 
 
+constexpr int kUndecided = 2;  // a cheap stage's answer when it cannot decide
+
 bool in_safe_range(double x) {
     const double m = std::fabs(x);
     return m == 0 || (m >= kSafeMin && m <= kSafeMax);
+}
+
+int sign_of(double x) { return (x > 0) - (x < 0); }
+
+/// Sets `difference` to x - y rounded; true when that is exact. Exactness is read off the
+/// two_diff error term, which is itself always exact.
+bool exact_difference(double x, double y, double& difference) {
+    double err;
+    exact::two_diff(x, y, difference, err);
+    return err == 0;
+}
+
+/// Sets `product` to x * y rounded; true when that is exact. Dekker's error term is exact
+/// when x and y are differences of safe-range coordinates (multiples of 2^-252 below 2^201)
+/// or products of two such, as here: nothing it computes can underflow or overflow.
+bool exact_product(double x, double y, double& product) {
+    double err;
+    exact::two_product(x, y, product, err);
+    return err == 0;
+}
+
+/// The orientation's exact sign without expansion arithmetic, or kUndecided. Two cheap exact
+/// arguments, in order:
+///  1. symbolic: a repeated point makes two rows of the determinant equal (or one zero), so
+///     the determinant is exactly 0 (shared vertices, touching contact by position);
+///  2. exact double evaluation: when every coordinate lies in the safe range and every
+///     difference, 2x2 product, minor and scaled minor is exact in doubles (flat or
+///     axis-aligned sheets, where zero differences make products exact; grid-snapped and
+///     short-mantissa coordinates), the determinant is the sum of three exact doubles
+///     t0 + t1 + t2. With s = t0 + t1 exact as well, the rounded s + t2 has the sign of the
+///     exact sum (IEEE rounding is monotonic and fl(x + y) = 0 only when x + y = 0).
+/// A term whose row-0 entry is zero is zero whatever its minor, so its minor is not needed.
+[[gnu::noinline]] int orient3d_cheap(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+    if (a == d || b == d || c == d || a == b || a == c || b == c) return 0;
+    const Vec3* points[4] = {&a, &b, &c, &d};
+    for (const Vec3* p : points)
+        if (!in_safe_range(p->x()) || !in_safe_range(p->y()) || !in_safe_range(p->z()))
+            return kUndecided;
+    double r[3][3];
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k)
+            if (!exact_difference((*points[i])[k], d[k], r[i][k])) return kUndecided;
+    double t[3];
+    for (int k = 0; k < 3; ++k) {  // cyclic cofactor expansion along row 0
+        t[k] = 0;
+        if (r[0][k] == 0) continue;
+        const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+        double p, q, minor;
+        if (!exact_product(r[1][k1], r[2][k2], p) || !exact_product(r[1][k2], r[2][k1], q) ||
+            !exact_difference(p, q, minor) || !exact_product(r[0][k], minor, t[k]))
+            return kUndecided;
+    }
+    double s, err;
+    exact::two_sum(t[0], t[1], s, err);
+    if (err != 0) return kUndecided;
+    return sign_of(s + t[2]);
+}
+
+/// orient2d's counterpart of orient3d_cheap: a repeated projected point gives 0; otherwise,
+/// with exact differences and both products exact, the rounded difference of the products
+/// has the exact sign.
+[[gnu::noinline]] int orient2d_cheap(double ax, double ay, double bx, double by, double cx,
+                                     double cy) {
+    if ((ax == cx && ay == cy) || (bx == cx && by == cy) || (ax == bx && ay == by)) return 0;
+    for (double x : {ax, ay, bx, by, cx, cy})
+        if (!in_safe_range(x)) return kUndecided;
+    double acx, acy, bcx, bcy, left, right;
+    if (!exact_difference(ax, cx, acx) || !exact_difference(ay, cy, acy) ||
+        !exact_difference(bx, cx, bcx) || !exact_difference(by, cy, bcy) ||
+        !exact_product(acx, bcy, left) || !exact_product(acy, bcx, right))
+        return kUndecided;
+    return sign_of(left - right);
 }
 
 /// Exact sign of the 3x3 determinant of rows[i][k] - shift[k] (shift = 0 when null), with
@@ -104,7 +181,7 @@ int determinant3_sign_expansion_entries(const double e[3][3][2]) {
     return exact::sign(total, n);
 }
 
-int orient3d_exact(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+[[gnu::noinline]] int orient3d_exact(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
     bool safe = true;
     for (const Vec3* p : {&a, &b, &c, &d})
         for (int k = 0; k < 3; ++k) safe = safe && in_safe_range((*p)[k]);
@@ -138,7 +215,8 @@ int orient3d_exact(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
     return determinant3_sign_expansion_entries(e);
 }
 
-int orient2d_exact(double ax, double ay, double bx, double by, double cx, double cy) {
+[[gnu::noinline]] int orient2d_exact(double ax, double ay, double bx, double by, double cx,
+                                     double cy) {
     const bool safe = in_safe_range(ax) && in_safe_range(ay) && in_safe_range(bx) &&
                       in_safe_range(by) && in_safe_range(cx) && in_safe_range(cy);
     if (!safe) {
@@ -180,6 +258,11 @@ int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
         ++t_counters.filtered;
         return -1;
     }
+    const int cheap = orient3d_cheap(a, b, c, d);
+    if (cheap != kUndecided) {
+        ++t_counters.shortcut;
+        return cheap;
+    }
     ++t_counters.exact;
     return orient3d_exact(a, b, c, d);
 }
@@ -198,6 +281,11 @@ int orient2d(const Vec3& a, const Vec3& b, const Vec3& c, int drop) {
     if (-det > bound && permanent < std::numeric_limits<double>::max()) {
         ++t_counters.filtered;
         return -1;
+    }
+    const int cheap = orient2d_cheap(a[i], a[j], b[i], b[j], c[i], c[j]);
+    if (cheap != kUndecided) {
+        ++t_counters.shortcut;
+        return cheap;
     }
     ++t_counters.exact;
     return orient2d_exact(a[i], a[j], b[i], b[j], c[i], c[j]);

@@ -68,6 +68,24 @@ std::array<std::uint32_t, 2> others(const TriIndices& t, std::uint32_t shared) {
     return {t[(at + 1) % 3], t[(at + 2) % 3]};
 }
 
+/// Coplanar shared-vertex case, both triangles non-degenerate: T1 = (v, a, b) and
+/// T2 = (v, c, d) in one plane, on which the projection dropping `drop` is injective, with
+/// 2D orientations o1, o2 != 0. Each triangle lies in its cone at v and contains every
+/// direction of that cone near v, so T1 ∩ T2 holds a point other than v iff the two cones
+/// share a direction; two closed circular arcs shorter than a half-turn meet iff an end of
+/// one lies in the other, so it suffices to test a, b in T2's cone and c, d in T1's. This is
+/// rule (2) of the header with one projection and four shared orient2d signs.
+bool coplanar_cones_overlap(const Vec3& v, const Vec3& a, const Vec3& b, const Vec3& c,
+                            const Vec3& d, int o1, int o2, int drop) {
+    const int ac = orient2d(v, a, c, drop), ad = orient2d(v, a, d, drop);
+    const int bc = orient2d(v, b, c, drop), bd = orient2d(v, b, d, drop);
+    const bool a_in_t2 = -ac * o2 >= 0 && ad * o2 >= 0;  // orient2d(v, c, a) = -ac
+    const bool b_in_t2 = -bc * o2 >= 0 && bd * o2 >= 0;
+    const bool c_in_t1 = ac * o1 >= 0 && -bc * o1 >= 0;  // orient2d(v, c, b) = -bc
+    const bool d_in_t1 = ad * o1 >= 0 && -bd * o1 >= 0;
+    return a_in_t2 || b_in_t2 || c_in_t1 || d_in_t1;
+}
+
 /// Shared-vertex case with T1 = (v, a, b), T2 = (v, c, d).
 bool shared_vertex_collide(const Vec3& v, const Vec3& a, const Vec3& b, const Vec3& c,
                            const Vec3& d) {
@@ -76,6 +94,15 @@ bool shared_vertex_collide(const Vec3& v, const Vec3& a, const Vec3& b, const Ve
     if (sa * sb > 0) return false;
     const int sc = orient3d(v, a, b, c), sd = orient3d(v, a, b, d);
     if (sc * sd > 0) return false;
+    if (sa == 0 && sb == 0 && sc == 0 && sd == 0) {  // coplanar (flat cloth): cones decide
+        const int drop = projection_axis(v, c, d);
+        if (drop >= 0) {
+            // a and b lie in T2's plane (sa = sb = 0), where this projection is injective,
+            // so o1 != 0 exactly when T1 is non-degenerate.
+            const int o1 = orient2d(v, a, b, drop);
+            if (o1 != 0) return coplanar_cones_overlap(v, a, b, c, d, o1, orient2d(v, c, d, drop), drop);
+        }
+    }
     if (!point_on_segment(v, a, b) && segment_intersects_triangle(a, b, sa, sb, v, c, d))
         return true;
     if (!point_on_segment(v, c, d) && segment_intersects_triangle(c, d, sc, sd, v, a, b))

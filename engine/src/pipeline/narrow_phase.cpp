@@ -30,16 +30,19 @@ void narrow_phase(const Frame& frame, std::span<const TrianglePair> candidates,
     const Stopwatch stopwatch;
     tbb::enumerable_thread_specific<std::vector<TrianglePair>> local_pairs;
     tbb::combinable<std::uint64_t> fallbacks([] { return std::uint64_t{0}; });
+    tbb::combinable<std::uint64_t> shortcuts([] { return std::uint64_t{0}; });
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 256),
                       [&](const tbb::blocked_range<std::size_t>& range) {
         // A task body runs on one thread, so the thread-local counters' difference over the
         // body is exactly this body's fallbacks.
-        const std::uint64_t before = predicate_counters().exact;
+        const PredicateCounters before = predicate_counters();
         std::vector<TrianglePair>& out = local_pairs.local();
         for (std::size_t k = range.begin(); k != range.end(); ++k) {
             if (pair_collides(frame, candidates[k])) out.push_back(candidates[k]);
         }
-        fallbacks.local() += predicate_counters().exact - before;
+        const PredicateCounters after = predicate_counters();
+        fallbacks.local() += after.exact - before.exact;
+        shortcuts.local() += after.shortcut - before.shortcut;
     });
     const std::size_t first = colliding.size();
     for (const std::vector<TrianglePair>& pairs : local_pairs) {
@@ -47,6 +50,7 @@ void narrow_phase(const Frame& frame, std::span<const TrianglePair> candidates,
     }
     stats.counts.exact_tests += candidates.size();
     stats.counts.exact_fallbacks += fallbacks.combine(std::plus<>());
+    stats.counts.exact_shortcuts += shortcuts.combine(std::plus<>());
     stats.counts.colliding_pairs += colliding.size() - first;
     stats.ms.narrow += stopwatch.elapsed_ms();
 }

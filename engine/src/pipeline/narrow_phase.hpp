@@ -14,8 +14,9 @@ namespace collidescope {
 /// Tests every candidate exactly, in parallel (TBB): triangles_intersect between objects,
 /// self_triangles_collide (with the file's vertex indices) within one. Appends the colliding
 /// ones to `colliding` (in an unspecified order) and sets ms.narrow, counts.exact_tests,
-/// counts.exact_fallbacks (predicate calls the float filter could not decide, summed over
-/// threads) and counts.colliding_pairs (what it appended). Candidates are canonical pairs.
+/// counts.exact_fallbacks (predicate calls that needed the exact fallback, expansions or
+/// GMP: neither the float filter nor the cheap exact stage decided them; summed over threads),
+/// counts.exact_shortcuts (calls the cheap exact stage decided) and counts.colliding_pairs (what it appended). Candidates are canonical pairs.
 void narrow_phase(const Frame& frame, std::span<const TrianglePair> candidates,
                   std::vector<TrianglePair>& colliding, FrameStats& stats);
 
