@@ -2,7 +2,7 @@
 // sequences: the pairs TSV against the all-pairs reference, the stats JSON Lines, --frames,
 // exit codes, stdout and stderr.
 
-#include "app/cli_runner.hpp"
+#include "support/cli_runner.hpp"
 #include "mesh/temp_files.hpp"
 #include "support/brute_reference.hpp"
 #include "support/scene_builders.hpp"

@@ -1,7 +1,7 @@
 // `collidescope export` and `collidescope bench` end to end on the small data sets: exported
 // files read back as exactly the generated frames, and bench writes every file it promises.
 
-#include "app/cli_runner.hpp"
+#include "support/cli_runner.hpp"
 #include "mesh/temp_files.hpp"
 
 #include "bench_run.hpp"

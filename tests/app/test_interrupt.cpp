@@ -4,7 +4,7 @@
 // finished before the kill. A write limit (RLIMIT_FSIZE, as a full disk) gives one line
 // naming the file and the frame, exit 2, and a `.partial` file that ends on a whole frame.
 
-#include "app/cli_runner.hpp"
+#include "support/cli_runner.hpp"
 #include "mesh/temp_files.hpp"
 
 #include <gtest/gtest.h>
