@@ -2,7 +2,7 @@
 // Shader programs of the replayer (replays/src, private): compiled and linked in the current
 // GL context, errors as UnavailableError naming what failed.
 
-#include "gl.hpp"
+#include "collidescope/gl_api.hpp"
 
 namespace collidescope::replays {
 

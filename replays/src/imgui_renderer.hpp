@@ -9,7 +9,7 @@
 // id; per draw list, upload its vertices and indices; per command, scissor to ClipRect, bind
 // the command's texture and draw ElemCount indices from IdxOffset, VtxOffset added to each.
 
-#include "gl.hpp"
+#include "collidescope/gl_api.hpp"
 
 struct ImDrawData;
 

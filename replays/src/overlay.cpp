@@ -2,7 +2,7 @@
 
 #include "overlay.hpp"
 
-#include "gl.hpp"
+#include "collidescope/gl_api.hpp"
 #include "imgui_renderer.hpp"
 
 #include <imgui.h>
