@@ -21,7 +21,7 @@ namespace {
 using collidescope::Vec3;
 using Tri = std::array<Vec3, 3>;
 
-double f32(double x) { return static_cast<double>(static_cast<float>(x)); }
+double f32(double x) { return collidescope::round_to_float32(x); }
 
 std::vector<std::pair<Tri, Tri>> make_pairs(const std::string& kind, std::uint64_t seed) {
     std::mt19937_64 rng(seed);

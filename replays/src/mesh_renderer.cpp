@@ -2,6 +2,8 @@
 
 #include "mesh_renderer.hpp"
 
+#include "gl_program.hpp"
+
 #include "collidescope/error.hpp"
 
 #include <string>
@@ -50,35 +52,6 @@ void main() {
 }
 )";
 
-GLuint compile(GLenum type, const char* source) {
-    const GLuint shader = glCreateShader(type);
-    glShaderSource(shader, 1, &source, nullptr);
-    glCompileShader(shader);
-    GLint ok = 0;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (ok == 0) {
-        char log[2048] = {};
-        glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-        throw UnavailableError(std::string("replay: shader does not compile: ") + log);
-    }
-    return shader;
-}
-
-GLuint link_program() {
-    const GLuint vertex = compile(GL_VERTEX_SHADER, k_vertex_shader);
-    const GLuint fragment = compile(GL_FRAGMENT_SHADER, k_fragment_shader);
-    const GLuint program = glCreateProgram();
-    glAttachShader(program, vertex);
-    glAttachShader(program, fragment);
-    glLinkProgram(program);
-    glDeleteShader(vertex);
-    glDeleteShader(fragment);
-    GLint ok = 0;
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (ok == 0) throw UnavailableError("replay: shader program does not link");
-    return program;
-}
-
 constexpr std::array<float, 3> k_background = {0.11f, 0.12f, 0.14f};
 
 }  // namespace
@@ -121,7 +94,7 @@ MeshRenderer::MeshRenderer(int width, int height) : m_width(width), m_height(hei
         throw UnavailableError("replay: cannot make a " + std::to_string(width) + "x" + std::to_string(height) +
                                " framebuffer");
     }
-    m_program = link_program();
+    m_program = link_program(k_vertex_shader, k_fragment_shader, "mesh");
 }
 
 MeshRenderer::~MeshRenderer() {

@@ -5,7 +5,7 @@
 // context.
 
 #include "frame_data.hpp"
-#include "gl.hpp"
+#include "collidescope/gl_api.hpp"
 
 #include "collidescope/replays/camera.hpp"
 

@@ -2,10 +2,10 @@
 
 #include "overlay.hpp"
 
-#include "gl.hpp"
+#include "collidescope/gl_api.hpp"
+#include "imgui_renderer.hpp"
 
 #include <imgui.h>
-#include <imgui_impl_opengl3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -96,13 +96,13 @@ Overlay::Overlay(int width, int height, float font_size)
     style.WindowPadding = ImVec2(m_font_size * 0.6f, m_font_size * 0.5f);
     style.ItemSpacing = ImVec2(m_font_size * 0.5f, m_font_size * 0.25f);
     style.Colors[ImGuiCol_WindowBg] = ImVec4(0.05f, 0.06f, 0.08f, 0.92f);
-    ImGui_ImplOpenGL3_Init("#version 450 core");
+    m_renderer = std::make_unique<ImGuiRenderer>();
 }
 
 Overlay::~Overlay() {
     const std::lock_guard<std::mutex> guard(imgui_lock());
     ImGui::SetCurrentContext(m_context);
-    ImGui_ImplOpenGL3_Shutdown();
+    m_renderer.reset();
     ImGui::DestroyContext(m_context);
 }
 
@@ -110,13 +110,11 @@ void Overlay::draw(const std::function<void()>& build) {
     const std::lock_guard<std::mutex> guard(imgui_lock());
     ImGui::SetCurrentContext(m_context);
     for (int pass = 0; pass < 2; ++pass) {
-        ImGui_ImplOpenGL3_NewFrame();
         ImGui::NewFrame();
         build();
         ImGui::Render();
     }
-    glViewport(0, 0, m_width, m_height);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    m_renderer->render(*ImGui::GetDrawData());
 }
 
 Texture::Texture(const std::vector<std::uint8_t>& rgba, int width, int height) {

@@ -14,6 +14,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -21,6 +22,8 @@
 struct ImGuiContext;
 
 namespace collidescope::replays {
+
+class ImGuiRenderer;
 
 /// What the whole session is, for every frame's annotations.
 struct SessionView {
@@ -47,7 +50,7 @@ std::mutex& imgui_lock();
 
 class Overlay {
 public:
-    /// An ImGui context with the OpenGL3 backend in the current GL context, for width x height
+    /// An ImGui context drawn by an ImGuiRenderer in the current GL context, for width x height
     /// images; the font is DejaVu Sans when installed (fonts-dejavu-core), else ImGui's own, of
     /// `font_size` pixels (0: from the height).
     Overlay(int width, int height, float font_size = 0);
@@ -64,6 +67,7 @@ public:
 
 private:
     ImGuiContext* m_context = nullptr;
+    std::unique_ptr<ImGuiRenderer> m_renderer;
     int m_width;
     int m_height;
     float m_font_size;

@@ -6,7 +6,7 @@
 // (class, command, the message as printed, exit code) to FILE as Markdown: docs/robustness.md
 // holds that table, copied from a real run.
 
-#include "app/cli_runner.hpp"
+#include "support/cli_runner.hpp"
 
 #include <gtest/gtest.h>
 

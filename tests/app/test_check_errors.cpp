@@ -1,7 +1,7 @@
 // Bad input through the command line: exit code 2 and one line on stderr that names the file
 // (never a crash, a hang or a second line), and usage errors.
 
-#include "app/cli_runner.hpp"
+#include "support/cli_runner.hpp"
 #include "mesh/temp_files.hpp"
 #include "support/scene_builders.hpp"
 

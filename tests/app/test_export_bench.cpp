@@ -1,7 +1,7 @@
 // `collidescope export` and `collidescope bench` end to end on the small data sets: exported
 // files read back as exactly the generated frames, and bench writes every file it promises.
 
-#include "app/cli_runner.hpp"
+#include "support/cli_runner.hpp"
 #include "mesh/temp_files.hpp"
 
 #include "bench_run.hpp"
@@ -24,13 +24,14 @@ using testing::read_text;
 using testing::run_cli;
 using testing_files::TempDir;
 
-// The scene, or a skip naming why it is unavailable (a data package not installed).
-#define MAKE_SCENE_OR_SKIP(var, spec)                                   \
+// The scene, or a failure naming why it is unavailable (a data package not installed:
+// scripts/setup.sh installs them all).
+#define MAKE_SCENE_OR_FAIL(var, spec)                                   \
     Scene var;                                                          \
     try {                                                               \
         var = make_builtin_scene(spec);                                 \
     } catch (const UnavailableError& error) {                           \
-        GTEST_SKIP() << error.what();                                   \
+        FAIL() << error.what();                                         \
     }
 
 std::size_t line_count(const std::string& text) {
@@ -43,7 +44,7 @@ class ExportRoundTrip : public ::testing::TestWithParam<std::string> {};
 // scene sets it, which the manifest carries).
 TEST_P(ExportRoundTrip, CheckOnExportedFilesFindsTheScenesPairs) {
     const std::string spec = GetParam() + ":small";
-    MAKE_SCENE_OR_SKIP(scene, spec);
+    MAKE_SCENE_OR_FAIL(scene, spec);
     TempDir dir;
     const auto exported = run_cli({"export", spec, "-o", "out"}, dir.path());
     ASSERT_EQ(exported.exit_code, 0) << exported.err;
@@ -67,7 +68,7 @@ INSTANTIATE_TEST_SUITE_P(DataSets, ExportRoundTrip, ::testing::Values("A", "B", 
 // Every exported frame file holds exactly the generated vertices and triangles, including across
 // D's topology change.
 TEST(Export, FilesHoldTheGeneratedFramesBitForBit) {
-    MAKE_SCENE_OR_SKIP(scene, "D:small");
+    MAKE_SCENE_OR_FAIL(scene, "D:small");
     TempDir dir;
     ASSERT_EQ(run_cli({"export", "D:small", "-o", "out", "-q"}, dir.path()).exit_code, 0);
     const nlohmann::json manifest = nlohmann::json::parse(read_text(dir.path() / "out/scene.json"));
@@ -144,7 +145,7 @@ TEST(Bench, ComparePairListsCountsMissingAndExtra) {
 }
 
 TEST(Bench, RunsEachMethodAloneOverEveryFrameAndRepeat) {
-    MAKE_SCENE_OR_SKIP(scene, "C:small");
+    MAKE_SCENE_OR_FAIL(scene, "C:small");
     app::BenchPlan plan;
     plan.methods = {"brute", "aabb", "aabb-thesis"};
     plan.begin = 2;

@@ -3,7 +3,7 @@
 // finds no EGL vendor when pointed at none): check exits 2 with the reason, bench skips the GPU
 // methods and says why.
 
-#include "app/cli_runner.hpp"
+#include "support/cli_runner.hpp"
 #include "mesh/temp_files.hpp"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // The README's two commands and .ci/run: CI runs exactly README's test command, and both
 // commands use the paths the build really produces.
 
-#include "app/cli_runner.hpp"
+#include "support/cli_runner.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // scene through a pipeline or a configured method.
 
 #include "bvh/aabb_method.hpp"
-#include "bvh/validate.hpp"
+#include "bvh/validate_tree.hpp"
 
 #include "collidescope/pipeline.hpp"
 #include "collidescope/scene.hpp"

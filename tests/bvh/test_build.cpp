@@ -6,7 +6,7 @@
 #include "support/scene_builders.hpp"
 
 #include "bvh/bvh.hpp"
-#include "bvh/validate.hpp"
+#include "bvh/validate_tree.hpp"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>

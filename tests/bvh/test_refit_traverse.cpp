@@ -5,7 +5,7 @@
 
 #include "bvh/bvh.hpp"
 #include "bvh/traverse.hpp"
-#include "bvh/validate.hpp"
+#include "bvh/validate_tree.hpp"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>

@@ -80,7 +80,7 @@ TEST(Collisions, SweepCountsWhatAllPairsCount) {
     for (const char* name : {"A", "B"}) {
         std::string why;
         std::optional<Scene> scene = try_make_scene(name, "small", k_seed, why);
-        if (!scene) GTEST_SKIP() << why;
+        ASSERT_TRUE(scene) << why;
         const std::uint32_t f = name[0] == 'A' ? scene->source->frame_count() / 2
                                                : scene->source->frame_count() - 1;
         const Frame frame = scene->source->frame(f);
@@ -94,7 +94,7 @@ TEST(Collisions, SweepCountsWhatAllPairsCount) {
 TEST(Collisions, BunniesMeetOnlyInTheMiddle) {
     std::string why;
     const std::optional<SceneCounts> counts = count_scene("A", why);
-    if (!counts) GTEST_SKIP() << why;
+    ASSERT_TRUE(counts) << why;
     const std::size_t last = counts->frames.size() - 1;
     EXPECT_EQ(counts->colliding(0), 0u);
     EXPECT_EQ(counts->colliding(last), 0u);
@@ -106,7 +106,7 @@ TEST(Collisions, BunniesMeetOnlyInTheMiddle) {
 TEST(Collisions, ClothsStartApartThenCollideMuch) {
     std::string why;
     const std::optional<SceneCounts> counts = count_scene("B", why);
-    if (!counts) GTEST_SKIP() << why;
+    ASSERT_TRUE(counts) << why;
     EXPECT_EQ(counts->colliding(0), 0u);
     EXPECT_GE(counts->colliding_frames(), counts->frames.size() / 2);
     EXPECT_GE(counts->most_colliding(), counts->triangles / 20);
@@ -116,7 +116,7 @@ TEST(Collisions, ClothsStartApartThenCollideMuch) {
 TEST(Collisions, ClothsCollideWithThemselvesAtTheEnd) {
     std::string why;
     std::optional<Scene> scene = try_make_scene("B", "small", k_seed, why);
-    if (!scene) GTEST_SKIP() << why;
+    ASSERT_TRUE(scene) << why;
     ASSERT_TRUE(scene->self_collision);
     const Frame first = scene->source->frame(0);
     EXPECT_EQ(count_collisions(first, true).colliding, 0u);
@@ -128,7 +128,7 @@ TEST(Collisions, ClothsCollideWithThemselvesAtTheEnd) {
 TEST(Collisions, SineSheetsNearlyMissAlways) {
     std::string why;
     const std::optional<SceneCounts> counts = count_scene("C", why);
-    if (!counts) GTEST_SKIP() << why;
+    ASSERT_TRUE(counts) << why;
     EXPECT_GT(counts->colliding_frames(), 0u);
     EXPECT_LT(counts->colliding_frames(), counts->frames.size());
     EXPECT_LE(counts->most_colliding(), counts->triangles / 50);
@@ -141,7 +141,7 @@ TEST(Collisions, SineSheetsNearlyMissAlways) {
 TEST(Collisions, BartSoupOverlapsThenAssemblesApart) {
     std::string why;
     const std::optional<SceneCounts> counts = count_scene("D", why);
-    if (!counts) GTEST_SKIP() << why;
+    ASSERT_TRUE(counts) << why;
     const std::size_t half = counts->frames.size() / 2;
     EXPECT_GT(counts->colliding(0), 0u);
     std::size_t soup_colliding = 0;
@@ -158,7 +158,7 @@ class ExplodingDragons : public ::testing::TestWithParam<std::string> {};
 TEST_P(ExplodingDragons, CollideThroughout) {
     std::string why;
     const std::optional<SceneCounts> counts = count_scene(GetParam(), why);
-    if (!counts) GTEST_SKIP() << why;
+    ASSERT_TRUE(counts) << why;
     EXPECT_EQ(counts->colliding_frames(), counts->frames.size());
 }
 

@@ -8,7 +8,7 @@ status=0
 for library in "$@"; do
   direct=$(nm -u "$library" | awk '$1 == "U" && $2 ~ /^gl[A-Z]/ {print $2}' | sort -u)
   if [ -n "$direct" ]; then
-    echo "$library calls GL through linked symbols (add them to gl_api.hpp or imgui_backend.cpp):" $direct
+    echo "$library calls GL through linked symbols (call them through gl_api.hpp):" $direct
     status=1
   fi
   # The check must see the archive's objects at all (a wrong path would pass vacuously).

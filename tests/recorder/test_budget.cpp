@@ -1,7 +1,7 @@
 // --budget with depth images: they go first (every 2nd, 4th, ... frame that has them, then all),
 // and only then positions; the summary line says what went; pairs never go.
 
-#include "app/cli_runner.hpp"
+#include "support/cli_runner.hpp"
 #include "mesh/temp_files.hpp"
 
 #include "collidescope/recorder/reader.hpp"

@@ -8,7 +8,7 @@
 
 #include "recording_helpers.hpp"
 
-#include "app/cli_runner.hpp"
+#include "support/cli_runner.hpp"
 #include "app/error_cases.hpp"
 #include "mesh/temp_files.hpp"
 

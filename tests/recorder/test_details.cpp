@@ -2,7 +2,7 @@
 // with --stats on the same frames (the engine is deterministic with its fixed seed): the
 // per-frame GPU cull state and every pass, read back through h5py (check_details.py).
 
-#include "app/cli_runner.hpp"
+#include "support/cli_runner.hpp"
 #include "mesh/temp_files.hpp"
 
 #include <gtest/gtest.h>

@@ -126,7 +126,7 @@ TEST(GroupCommit, WritesWhatSingleFramesWriteWhenVertexCountsChange) {
 
 // A group whose disk space cannot be reserved is written one frame at a time: every frame that
 // fits is kept and the error names the first that does not (a file size limit stands in for a
-// full disk, as in tests/recorder/test_interrupt.cpp).
+// full disk, as in tests/recorder/test_record_interrupt.cpp).
 TEST(GroupCommit, AGroupThatDoesNotFitKeepsTheFramesThatDo) {
     TempDir dir;
     const Scene scene = testing::crossing_sheets(30, 40);

@@ -4,7 +4,7 @@
 
 #include "recording_helpers.hpp"
 
-#include "app/cli_runner.hpp"
+#include "support/cli_runner.hpp"
 #include "mesh/temp_files.hpp"
 #include "support/scene_builders.hpp"
 

@@ -2,7 +2,7 @@
 
 #include "replay_helpers.hpp"
 
-#include "app/cli_runner.hpp"
+#include "support/cli_runner.hpp"
 
 #include <gtest/gtest.h>
 #include <hdf5.h>

@@ -3,7 +3,7 @@
 
 #include "replay_helpers.hpp"
 
-#include "app/cli_runner.hpp"
+#include "support/cli_runner.hpp"
 
 #include "collidescope/recorder/reader.hpp"
 #include "collidescope/replays/camera.hpp"

@@ -26,6 +26,9 @@ else()
   set(sanitizer_defaults ${CMAKE_CURRENT_LIST_DIR}/address_defaults.cpp)
 endif()
 
+# The defaults are compiled once, as an object library whose object every executable links.
+add_library(collidescope_sanitizer_defaults OBJECT ${sanitizer_defaults})
+
 function(collidescope_sanitize_executables directory)
   get_property(targets DIRECTORY ${directory} PROPERTY BUILDSYSTEM_TARGETS)
   get_property(subdirectories DIRECTORY ${directory} PROPERTY SUBDIRECTORIES)
@@ -37,7 +40,7 @@ function(collidescope_sanitize_executables directory)
     if(NOT type STREQUAL "EXECUTABLE")
       continue()
     endif()
-    target_sources(${target} PRIVATE ${sanitizer_defaults})
+    target_link_libraries(${target} PRIVATE collidescope_sanitizer_defaults)
     if(TARGET collidescope_tbb_tsan_bridge)
       # First on the link line (and so first among the DT_NEEDED libraries after libtsan).
       get_target_property(libraries ${target} LINK_LIBRARIES)

@@ -14,7 +14,7 @@ int integer(std::mt19937_64& rng, int lo, int hi) {
     return std::uniform_int_distribution<int>(lo, hi)(rng);
 }
 /// A float32 coordinate, as most meshes store them.
-double f32(double x) { return static_cast<double>(static_cast<float>(x)); }
+double f32(double x) { return round_to_float32(x); }
 
 Vec3 random_point(std::mt19937_64& rng) {
     return {f32(uniform(rng, 0, 1)), f32(uniform(rng, 0, 1)), f32(uniform(rng, 0, 1))};

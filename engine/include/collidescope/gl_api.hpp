@@ -18,24 +18,22 @@
 
 #include <cassert>
 
-/// Every GL function collidescope calls (engine, replays, Dear ImGui's OpenGL3 backend).
+/// Every GL function collidescope calls (engine, replays and its ImGui renderer).
 #define COLLIDESCOPE_GL_FUNCTIONS(X)                                                             \
     X(glActiveTexture) X(glAttachShader) X(glBeginQuery) X(glBindBuffer) X(glBindBufferBase)     \
-    X(glBindFramebuffer) X(glBindRenderbuffer) X(glBindSampler) X(glBindTexture)                 \
-    X(glBindVertexArray) X(glBlendEquation) X(glBlendEquationSeparate) X(glBlendFuncSeparate)    \
-    X(glBufferData) X(glBufferSubData) X(glCheckFramebufferStatus) X(glClear)                    \
-    X(glClearBufferSubData) X(glClearColor) X(glClearDepth) X(glClipControl) X(glCompileShader)  \
+    X(glBindFramebuffer) X(glBindRenderbuffer) X(glBindTexture) X(glBindVertexArray)             \
+    X(glBlendEquation) X(glBlendFuncSeparate) X(glBufferData) X(glCheckFramebufferStatus)        \
+    X(glClear) X(glClearBufferSubData) X(glClearColor) X(glClearDepth) X(glCompileShader)        \
     X(glCreateProgram) X(glCreateShader) X(glDeleteBuffers) X(glDeleteFramebuffers)              \
     X(glDeleteProgram) X(glDeleteQueries) X(glDeleteRenderbuffers) X(glDeleteShader)             \
-    X(glDeleteTextures) X(glDeleteVertexArrays) X(glDepthFunc) X(glDepthMask) X(glDetachShader)  \
-    X(glDisable) X(glDrawArrays) X(glDrawBuffer) X(glDrawElements) X(glDrawElementsBaseVertex)   \
-    X(glEnable) X(glEnableVertexAttribArray) X(glEndQuery) X(glFramebufferParameteri) \
+    X(glDeleteTextures) X(glDeleteVertexArrays) X(glDepthFunc) X(glDepthMask) X(glDisable)       \
+    X(glDrawArrays) X(glDrawBuffer) X(glDrawElements) X(glDrawElementsBaseVertex) X(glEnable)    \
+    X(glEnableVertexAttribArray) X(glEndQuery) X(glFramebufferParameteri)                        \
     X(glFramebufferRenderbuffer) X(glFramebufferTexture2D) X(glGenBuffers) X(glGenFramebuffers)  \
     X(glGenQueries) X(glGenRenderbuffers) X(glGenTextures) X(glGenVertexArrays)                  \
-    X(glGetAttribLocation) X(glGetBufferSubData) X(glGetError) X(glGetIntegerv)                  \
-    X(glGetProgramInfoLog) X(glGetProgramiv) X(glGetQueryObjectuiv) X(glGetShaderInfoLog)        \
-    X(glGetShaderiv) X(glGetString) X(glGetStringi) X(glGetTexImage) X(glGetUniformLocation)     \
-    X(glIsEnabled) X(glLinkProgram) X(glMemoryBarrier) X(glPixelStorei) X(glPolygonMode)         \
+    X(glGetBufferSubData) X(glGetError) X(glGetIntegerv) X(glGetProgramInfoLog) X(glGetProgramiv) \
+    X(glGetQueryObjectuiv) X(glGetShaderInfoLog) X(glGetShaderiv) X(glGetString) X(glGetTexImage) \
+    X(glGetUniformLocation) X(glLinkProgram) X(glMemoryBarrier) X(glPixelStorei) X(glPolygonMode) \
     X(glProgramUniform2f) X(glReadBuffer) X(glReadPixels) X(glRenderbufferStorage) X(glScissor)  \
     X(glShaderSource) X(glTexBuffer) X(glTexImage2D) X(glTexParameteri) X(glUniform1i)           \
     X(glUniform1ui) X(glUniform3f) X(glUniform3fv) X(glUniformMatrix4fv) X(glUseProgram)         \

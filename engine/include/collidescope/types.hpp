@@ -16,6 +16,17 @@ namespace collidescope {
 /// A point or vector in 3D, exactly the coordinates read from the input.
 using Vec3 = Eigen::Vector3d;
 
+/// `x` rounded to the nearest float32 (ties to even; overflow to infinity), as a double, which
+/// holds it exactly: the precision most mesh files store. Out of line on purpose: the one
+/// place the round trip is written (engine/src/geometry/float32.cpp says why). Thread-safe.
+double round_to_float32(double x);
+
+/// Each coordinate rounded to the nearest float32 (round_to_float32).
+Vec3 round_to_float32(const Vec3& point);
+
+/// True when `x` is a float32 value, so a float32 file keeps it exactly.
+bool is_float32(double x);
+
 /// Vertex indices of one triangle, in file order, into its object's vertex array.
 using TriIndices = std::array<std::uint32_t, 3>;
 

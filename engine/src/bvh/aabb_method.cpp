@@ -148,10 +148,8 @@ bool rebuild_in_background(AabbBackground mode, int threads) {
 
 AabbConfig aabb_config(const AabbOptions& options, int threads) {
     AabbConfig config;
-    config.build.builder = options.builder == AabbBuilder::Sah ? Builder::Sah : Builder::Lbvh;
-    config.policy.rule = options.rebuild == AabbRebuildRule::Thesis  ? RebuildRule::Thesis
-                         : options.rebuild == AabbRebuildRule::Never ? RebuildRule::Never
-                                                                     : RebuildRule::Quality;
+    config.build.builder = options.builder;
+    config.policy.rule = options.rebuild;
     config.policy.quality_limit = options.quality_limit;
     config.policy.thesis_fraction = options.thesis_fraction;
     config.background = rebuild_in_background(options.background, threads) ? BackgroundMode::Async : BackgroundMode::Off;

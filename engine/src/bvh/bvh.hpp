@@ -8,6 +8,7 @@
 // Exactness: every box is closed and built from the input coordinates by min/max only, so a
 // node box contains its triangles exactly and a box comparison on doubles is exact.
 
+#include "collidescope/aabb_options.hpp"
 #include "collidescope/types.hpp"
 
 #include <array>
@@ -133,11 +134,10 @@ struct Tree {
     bool empty() const { return nodes.empty(); }
 };
 
-/// Which builder builds a tree.
-enum class Builder : std::uint8_t {
-    Sah,   ///< top-down, binned surface area heuristic
-    Lbvh,  ///< Morton codes sorted, split at the highest differing bit (Karras-style linear BVH)
-};
+/// Which builder builds a tree: Sah (top-down, binned surface area heuristic) or Lbvh (Morton
+/// codes sorted, split at the highest differing bit: Karras-style linear BVH). One definition:
+/// the public option, AabbBuilder (collidescope/aabb_options.hpp).
+using Builder = AabbBuilder;
 
 /// Options of a build.
 struct BuildConfig {

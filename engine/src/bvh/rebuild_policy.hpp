@@ -3,30 +3,32 @@
 // function of what the method measured (its timings come from the method's injected clock),
 // so tests script the timings and assert each decision.
 
+#include "collidescope/aabb_options.hpp"
+#include "collidescope/stats.hpp"
+
 #include <cstdint>
 #include <string_view>
 
 namespace collidescope::bvh {
 
-/// Why a tree was (re)built. The values are the bits of AabbFrameInfo::rebuild_reasons
-/// (collidescope/stats.hpp).
+/// Why a tree was (re)built. The values are the bits of AabbFrameInfo::rebuild_reasons,
+/// defined once in collidescope/stats.hpp.
 enum class RebuildReason : std::uint8_t {
     None = 0,
-    Initial = 1,   ///< the object had no tree yet
-    Topology = 2,  ///< its triangles changed (always rebuilds)
-    Thesis = 4,    ///< thesis 5.2.1: detection time above 3/4 of a rebuild's time
-    Quality = 8,   ///< the refit tree's SAH cost degraded past the limit
+    Initial = k_rebuild_initial,    ///< the object had no tree yet
+    Topology = k_rebuild_topology,  ///< its triangles changed (always rebuilds)
+    Thesis = k_rebuild_thesis,      ///< thesis 5.2.1: detection time above 3/4 of a rebuild's time
+    Quality = k_rebuild_quality,    ///< the refit tree's SAH cost degraded past the limit
 };
 
 /// "none", "initial", "topology", "thesis" or "quality".
 std::string_view rebuild_reason_name(RebuildReason reason);
 
-/// Which rule decides rebuilds of trees whose topology did not change.
-enum class RebuildRule : std::uint8_t {
-    Quality,  ///< rebuild when quality (SAH cost / post-build cost) exceeds quality_limit
-    Thesis,   ///< rebuild when the last frame's detection time exceeds thesis_fraction * rebuild time
-    Never,    ///< refit only (topology changes still rebuild)
-};
+/// Which rule decides rebuilds of trees whose topology did not change: Quality (SAH cost /
+/// post-build cost above quality_limit), Thesis (the last frame's detection time above
+/// thesis_fraction * rebuild time) or Never (refit only; topology changes still rebuild). One
+/// definition: the public option, AabbRebuildRule (collidescope/aabb_options.hpp).
+using RebuildRule = AabbRebuildRule;
 
 /// Options of the policy.
 struct RebuildPolicyConfig {

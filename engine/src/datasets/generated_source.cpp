@@ -54,7 +54,7 @@ private:
         result.topology = topology_at(object, index);
         result.vertices.resize(result.topology->vertex_count);
         object.vertices(index, result.vertices);
-        for (Vec3& vertex : result.vertices) vertex = round_to_float(vertex);
+        for (Vec3& vertex : result.vertices) vertex = round_to_float32(vertex);
         return result;
     }
 
@@ -127,12 +127,6 @@ std::vector<TriIndices> soup_triangles(std::uint32_t count) {
     std::vector<TriIndices> triangles(count);
     for (std::uint32_t i = 0; i < count; ++i) triangles[i] = {3 * i, 3 * i + 1, 3 * i + 2};
     return triangles;
-}
-
-Vec3 round_to_float(const Vec3& point) {
-    return {static_cast<double>(static_cast<float>(point.x())),
-            static_cast<double>(static_cast<float>(point.y())),
-            static_cast<double>(static_cast<float>(point.z()))};
 }
 
 Random::Random(std::uint64_t seed, std::uint64_t stream)

@@ -61,9 +61,6 @@ std::vector<TriIndices> torus_triangles(std::uint32_t columns, std::uint32_t row
 /// triangles share a vertex (no edge connectivity).
 std::vector<TriIndices> soup_triangles(std::uint32_t count);
 
-/// Each coordinate rounded to the nearest float32, returned as double (exact).
-Vec3 round_to_float(const Vec3& point);
-
 /// SplitMix64 (Steele, Lea, Flood 2014): a tiny seeded stream, identical on every platform.
 class Random {
 public:

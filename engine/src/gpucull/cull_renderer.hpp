@@ -3,7 +3,7 @@
 // buffer of the view's size, the uploaded TriangleQuads, the two programs, a pool of occlusion
 // queries and the flag buffer. It draws what it is told; image_space_cull decides what.
 
-#include "gpucull/gl.hpp"
+#include "collidescope/gl_api.hpp"
 #include "gpucull/shaders.hpp"
 #include "gpucull/view_quads.hpp"
 

@@ -1,6 +1,6 @@
 // Choosing the GL context's implementation at run time (--gl auto|osmesa|egl).
 
-#include "gpucull/gl_context.hpp"
+#include "gpucull/cull_context.hpp"
 
 #include "collidescope/error.hpp"
 

@@ -4,8 +4,8 @@
 // surface where EGL_KHR_surfaceless_context allows it, on a 1x1 pbuffer otherwise (rendering
 // goes to framebuffer objects either way). Entry points come from eglGetProcAddress.
 
-#include "gpucull/gl.hpp"
-#include "gpucull/gl_context.hpp"
+#include "collidescope/gl_api.hpp"
+#include "gpucull/cull_context.hpp"
 
 #include "collidescope/error.hpp"
 

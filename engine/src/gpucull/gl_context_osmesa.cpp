@@ -2,8 +2,8 @@
 // its own framebuffer objects; the window-system buffer only has to exist). Entry points come
 // from OSMesaGetProcAddress.
 
-#include "gpucull/gl.hpp"
-#include "gpucull/gl_context.hpp"
+#include "collidescope/gl_api.hpp"
+#include "gpucull/cull_context.hpp"
 
 #include "collidescope/error.hpp"
 

@@ -3,7 +3,7 @@
 #include "gpucull/gpu_method.hpp"
 
 #include "gpucull/cull_renderer.hpp"
-#include "gpucull/gl_context.hpp"
+#include "gpucull/cull_context.hpp"
 #include "gpucull/image_space_cull.hpp"
 #include "gpucull/triangles_per_query.hpp"
 #include "gpucull/view_configuration.hpp"

@@ -8,7 +8,7 @@
 //    triangle's upper depth bound over the pixel is at or behind it; with `write_flags` it also
 //    sets the triangle's flag in a shader storage buffer (the query-free variant).
 
-#include "gpucull/gl.hpp"
+#include "collidescope/gl_api.hpp"
 
 #include <string>
 

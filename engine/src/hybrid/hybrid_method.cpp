@@ -4,7 +4,7 @@
 #include "hybrid/hybrid_method.hpp"
 
 #include "gpucull/cull_renderer.hpp"
-#include "gpucull/gl_context.hpp"
+#include "gpucull/cull_context.hpp"
 #include "gpucull/image_space_cull.hpp"
 #include "gpucull/view_configuration.hpp"
 #include "pipeline/narrow_phase.hpp"

@@ -1,6 +1,6 @@
 // --method, --self, --no-self, --threads, --gpu-*, --aabb-* -> PipelineConfig.
 
-#include "engine_options.hpp"
+#include "engine_cli_options.hpp"
 
 #include "scene_input.hpp"
 

@@ -50,7 +50,7 @@ std::vector<std::string> file_stems(const FrameSource& source) {
 bool all_float32(const std::vector<Vec3>& vertices) {
     for (const Vec3& v : vertices) {
         for (int axis = 0; axis < 3; ++axis) {
-            if (static_cast<double>(static_cast<float>(v[axis])) != v[axis]) return false;
+            if (!is_float32(v[axis])) return false;
         }
     }
     return true;

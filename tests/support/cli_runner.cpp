@@ -1,6 +1,6 @@
 // Running the command line from tests.
 
-#include "app/cli_runner.hpp"
+#include "support/cli_runner.hpp"
 
 #include "support/brute_reference.hpp"
 

@@ -1,6 +1,6 @@
 // --aabb-* and --rebuild-* options -> AabbOptions.
 
-#include "aabb_options.hpp"
+#include "aabb_cli_options.hpp"
 
 namespace collidescope::app {
 

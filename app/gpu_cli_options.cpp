@@ -1,6 +1,6 @@
 // --gpu-* options -> GpuCullConfig.
 
-#include "gpu_options.hpp"
+#include "gpu_cli_options.hpp"
 
 #include "collidescope/error.hpp"
 

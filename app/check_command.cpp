@@ -3,7 +3,7 @@
 
 #include "check_sinks.hpp"
 #include "commands.hpp"
-#include "engine_options.hpp"
+#include "engine_cli_options.hpp"
 #include "frame_range.hpp"
 #include "interrupt.hpp"
 #include "output_stream.hpp"

@@ -2,7 +2,7 @@
 // to one HDF5 file (recorder/, docs/recording.md).
 
 #include "commands.hpp"
-#include "engine_options.hpp"
+#include "engine_cli_options.hpp"
 #include "frame_range.hpp"
 #include "interrupt.hpp"
 #include "progress.hpp"

@@ -1,6 +1,6 @@
 // The tree validator: a slow, obvious walk over every node (serial, no shortcuts).
 
-#include "bvh/validate.hpp"
+#include "bvh/validate_tree.hpp"
 
 #include <algorithm>
 

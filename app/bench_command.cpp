@@ -2,12 +2,12 @@
 // frames.csv, summary.csv, a printed table, a plot per scene and an index.html; and the check
 // that every method returned exactly the same pairs on every frame.
 
-#include "aabb_options.hpp"
+#include "aabb_cli_options.hpp"
 #include "bench_report.hpp"
 #include "bench_run.hpp"
 #include "commands.hpp"
 #include "frame_range.hpp"
-#include "gpu_options.hpp"
+#include "gpu_cli_options.hpp"
 #include "progress.hpp"
 #include "scene_input.hpp"
 

@@ -3,8 +3,8 @@
 // record): --method, --self / --no-self, --threads, the GPU cull's --gpu-* and the AABB
 // hierarchies' --aabb-* options.
 
-#include "aabb_options.hpp"
-#include "gpu_options.hpp"
+#include "aabb_cli_options.hpp"
+#include "gpu_cli_options.hpp"
 
 #include "collidescope/pipeline.hpp"
 #include "collidescope/scene.hpp"
