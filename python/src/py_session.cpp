@@ -128,7 +128,7 @@ void bind_session(py::module_& m) {
     py::class_<PySession>(m, "Session", k_doc)
         .def(py::init<const py::sequence&, bool, const std::string&, int, const std::optional<std::string>&,
                       const std::string&, const std::optional<std::vector<std::string>>&, const std::string&>(),
-             py::arg("triangles"), py::kw_only(), py::arg("self_collision") = false, py::arg("method") = "adaptive",
+             py::arg("triangles"), py::arg("self_collision") = false, py::arg("method") = "adaptive",
              py::arg("threads") = 0, py::arg("record") = py::none(), py::arg("policy") = "cost",
              py::arg("names") = py::none(), py::arg("scene") = "session")
         .def("set_triangles", &PySession::set_triangles, py::arg("object"), py::arg("triangles"),

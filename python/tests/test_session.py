@@ -125,3 +125,15 @@ def test_with_finishes_the_recording(tmp_path):
         assert rec.finished and len(rec) == 1
     with pytest.raises(RuntimeError, match="closed"):
         session.step(scene.positions(1))
+
+
+def test_the_options_in_the_issue_s_order():
+    """Session(triangles, self_collision, method, threads, record), positionally too."""
+    scene = collidescope.scene("B:small")
+    by_position = collidescope.Session(scene.triangles(), True, "aabb", 1, None)
+    by_name = collidescope.Session(scene.triangles(), self_collision=True, method="aabb", threads=1, record=None)
+    assert by_position.method == "aabb"
+    positions = scene.positions(13)  # the cloths fold onto themselves from frame 11 on
+    pairs = by_position.step(positions)
+    assert len(pairs) > 0 and np.array_equal(pairs, by_name.step(positions))
+    assert (pairs[:, 0] == pairs[:, 2]).any()  # self-collision pairs are there
