@@ -4,8 +4,10 @@
 #      README's C++ loop (the block after <!-- embed-cpp-loop -->) as a second program;
 #   3. run the example on SCENE, recording; its pairs must equal `collidescope check --pairs`
 #      byte for byte, and `collidescope validate` must accept its recording;
-#   4. run the README's loop, which must print a line per frame.
-# Variables: BUILD_DIR, SOURCE_DIR, CLI (the collidescope binary), SCENE, GENERATOR.
+#   4. run the README's loop, which must print a line per frame;
+#   5. with PYTHON and PYTHON_DIR (the module is built): import the installed module from
+#      PREFIX/PYTHON_DIR and step a frame, so the install's layout and RPATH are held too.
+# Variables: BUILD_DIR, SOURCE_DIR, CLI (the collidescope binary), SCENE; PYTHON, PYTHON_DIR.
 foreach(var BUILD_DIR SOURCE_DIR CLI SCENE)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "embed_cpp.cmake: ${var} is not set")
@@ -65,5 +67,21 @@ if(NOT last_output MATCHES "frame 15: ")
   message(FATAL_ERROR "the README's loop did not print frame 15:\n${last_output}")
 endif()
 
+set(python_note "")
+if(PYTHON)
+  # Newlines, not semicolons: execute_process would split its arguments at semicolons.
+  string(CONCAT probe "import collidescope\n" "s = collidescope.scene('${SCENE}')\n"
+         "x = collidescope.Session(s.triangles(), method='aabb')\n"
+         "n = sum(len(x.step(s.positions(f))) for f in range(len(s)))\n" "print(collidescope.__file__, n)\n")
+  run_step("installed python module" ${CMAKE_COMMAND} -E env PYTHONPATH=${tmp}/prefix/${PYTHON_DIR} ${PYTHON} -c "${probe}")
+  file(STRINGS ${tmp}/check.tsv check_lines)
+  list(LENGTH check_lines check_count)
+  if(NOT last_output MATCHES "^${tmp}/prefix/${PYTHON_DIR}/collidescope/__init__.py ${check_count}\n")
+    message(FATAL_ERROR "the installed module did not load from the prefix or found other pairs "
+                        "(check: ${check_count}):\n${last_output}")
+  endif()
+  set(python_note "; the installed Python module found the same ${check_count} pairs")
+endif()
+
 file(REMOVE_RECURSE ${tmp})
-message(STATUS "embed_cpp: ${check_size} bytes of pairs equal check's; the README's loop ran")
+message(STATUS "embed_cpp: ${check_size} bytes of pairs equal check's; the README's loop ran${python_note}")
