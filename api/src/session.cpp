@@ -53,6 +53,7 @@ struct Session::Impl {
 
     std::string label(std::uint32_t object) const { return api::object_label(object, names[object]); }
     void take_positions(std::span<const VertexView> positions);
+    void start_recording_once();
 };
 
 // Pending triangles take effect with the positions they come with: their indices are
@@ -87,6 +88,18 @@ void Session::Impl::take_positions(std::span<const VertexView> positions) {
         topology_from[k] = frame.index;
         pending[k].reset();
     }
+}
+
+// With options.record, the recorder starts at the first frame taken (its chunks are sized by
+// it) and reports every frame from then on; unnamed objects are "object<k>" in the file.
+void Session::Impl::start_recording_once() {
+    if (options.record.empty() || recorder) return;
+    std::vector<std::string> file_names = names;
+    for (std::size_t k = 0; k < file_names.size(); ++k) {
+        if (file_names[k].empty()) file_names[k] = "object" + std::to_string(k);
+    }
+    recorder = api::start_recording(options, pipeline.config(), std::move(file_names), frame);
+    pipeline.add_sink(*recorder);
 }
 
 Session::Session(SessionOptions options) : m_impl(std::make_unique<Impl>(std::move(options))) {}
@@ -138,14 +151,7 @@ std::span<const CollidingPair> Session::step(std::span<const VertexView> positio
     if (impl.closed) throw std::logic_error("step: the session is closed");
     if (impl.names.empty()) throw InputError("step: no objects declared (add_object before the first step)");
     impl.take_positions(positions);
-    if (!impl.options.record.empty() && !impl.recorder) {
-        std::vector<std::string> names = impl.names;
-        for (std::size_t k = 0; k < names.size(); ++k) {
-            if (names[k].empty()) names[k] = "object" + std::to_string(k);
-        }
-        impl.recorder = api::start_recording(impl.options, impl.pipeline.config(), std::move(names), impl.frame);
-        impl.pipeline.add_sink(*impl.recorder);
-    }
+    impl.start_recording_once();
     impl.result = impl.pipeline.process(impl.frame);
     ++impl.frame.index;
     impl.pairs.resize(impl.result.colliding_pairs.size());
