@@ -28,6 +28,9 @@ PACKAGES=(
   libembree-dev libfcl-dev
   # trace scripts and their tests
   python3 python3-h5py python3-numpy python3-matplotlib
+  # python module and its tests: pybind11 builds `collidescope._core` for Debian's python3
+  # (its headers come with python3-dev); pytest runs python/tests from ctest
+  pybind11-dev python3-pybind11 python3-dev python3-pytest
   ca-certificates
 )
 

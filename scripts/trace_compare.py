@@ -10,21 +10,16 @@ pairs, 1 otherwise (like `collidescope compare`).
 """
 import sys
 
-from trace_common import frames_complete, open_recording
+from trace_common import open_recording
 
 
-def pair_sets(f):
-    n = frames_complete(f)
-    index = f["frames/index"][:n]
-    offsets = f["collisions/offsets"][: n + 1]
-    pairs = f["collisions/pairs"][: offsets[-1]]
-    return {int(index[r]): {tuple(map(int, p)) for p in pairs[offsets[r]:offsets[r + 1]]} for r in range(n)}, n
+def pair_sets(rec):
+    return {int(frame): {tuple(map(int, p)) for p in rec.pairs(frame)} for frame in rec.frames}
 
 
 def main(path_a, path_b):
     with open_recording(path_a) as a, open_recording(path_b) as b:
-        sets_a, n_a = pair_sets(a)
-        sets_b, n_b = pair_sets(b)
+        sets_a, sets_b = pair_sets(a), pair_sets(b)
         common = sorted(set(sets_a) & set(sets_b))
         differ = [(fr, len(sets_a[fr] - sets_b[fr]), len(sets_b[fr] - sets_a[fr])) for fr in common if sets_a[fr] != sets_b[fr]]
         print("%d frames matched; only in a: %d, only in b: %d" % (len(common), len(sets_a) - len(common), len(sets_b) - len(common)))
@@ -35,15 +30,15 @@ def main(path_a, path_b):
                 print("%d\t%d\t%d" % row)
         else:
             print("pairs identical in every matched frame")
-        rows_a = {int(fr): r for r, fr in enumerate(a["frames/index"][:n_a])}
-        rows_b = {int(fr): r for r, fr in enumerate(b["frames/index"][:n_b])}
+        rows_a = {int(fr): r for r, fr in enumerate(a.frames)}
+        rows_b = {int(fr): r for r, fr in enumerate(b.frames)}
+        ms_a, ms_b = a.stats["ms"], b.stats["ms"]
         print("stage\ttotal_a_ms\ttotal_b_ms\tratio_b_over_a")
-        for stage in a["frames/ms"]:
-            if stage not in b["frames/ms"]:
+        for stage in ms_a:
+            if stage not in ms_b:
                 continue
-            ms_a, ms_b = a["frames/ms/" + stage][:n_a], b["frames/ms/" + stage][:n_b]
-            total_a = sum(ms_a[rows_a[fr]] for fr in common)
-            total_b = sum(ms_b[rows_b[fr]] for fr in common)
+            total_a = sum(ms_a[stage][rows_a[fr]] for fr in common)
+            total_b = sum(ms_b[stage][rows_b[fr]] for fr in common)
             ratio = "%.3f" % (total_b / total_a) if total_a > 0 else "-"
             print("%s\t%.3f\t%.3f\t%s" % (stage, total_a, total_b, ratio))
         same = not differ and len(common) == len(sets_a) == len(sets_b)

@@ -19,7 +19,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from trace_common import attr_text, depth_image, depth_image_count, frames_complete, open_recording  # noqa: E402
+from trace_common import open_recording  # noqa: E402
 
 AXES = "xyz"
 
@@ -31,25 +31,24 @@ def main():
     parser.add_argument("--image", type=int, default=0, help="which image of the frame (default 0)")
     parser.add_argument("-o", "--output", default="depth.png")
     args = parser.parse_args()
-    with open_recording(args.recording) as f:
-        n = frames_complete(f)
-        frames = list(f["frames/index"][:n])
-        counts = [depth_image_count(f, r) for r in range(n)]
+    with open_recording(args.recording) as rec:
+        frames = [int(f) for f in rec.frames]
+        counts = [rec.depth_count(f) for f in frames]
         if sum(counts) == 0:
-            print("no depth buffers in this recording (--depth %s)" % attr_text(f, "depth", "off"))
+            print("no depth buffers in this recording (--depth %s)" % rec.attrs.get("depth", "off"))
             return 0
         if args.frame is None:
-            row = next(r for r in range(n) if counts[r] > 0)
+            row = next(r for r in range(len(frames)) if counts[r] > 0)
         elif args.frame in frames:
             row = frames.index(args.frame)
         else:
             sys.exit("%s: frame %d is not recorded" % (args.recording, args.frame))
         if not 0 <= args.image < counts[row]:
-            with_depth = [int(frames[r]) for r in range(n) if counts[r] > 0]
+            with_depth = [frames[r] for r in range(len(frames)) if counts[r] > 0]
             sys.exit("%s: frame %d has %d depth images (frames with some: %s)"
                      % (args.recording, frames[row], counts[row], ", ".join(map(str, with_depth[:20]))))
-        image = depth_image(f, row, args.image)
-        unit = attr_text(f["gpu/depth/range"], "unit")
+        image = rec.depth(frames[row])[args.image]
+        unit = rec.unit("gpu/depth/range")
     near, far = image["near"], image["far"]
     world = np.where(image["depth"] < 1.0, near + image["depth"] * (far - near), np.nan)
     view = image["view"]

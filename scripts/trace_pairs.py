@@ -10,7 +10,7 @@ pair count and the triangles involved per object. --frames keeps scene frames A.
 import argparse
 import sys
 
-from trace_common import frames_complete, open_recording
+from trace_common import open_recording
 
 
 def main():
@@ -20,17 +20,12 @@ def main():
     parser.add_argument("--frames", default=":", help="scene frames A:B (half-open)")
     args = parser.parse_args()
     first, _, last = args.frames.partition(":")
-    with open_recording(args.recording) as f:
-        n = frames_complete(f)
-        index = f["frames/index"][:n]
-        offsets = f["collisions/offsets"][: n + 1]
-        pairs = f["collisions/pairs"][: offsets[-1]]
-        out = sys.stdout
-        for row in range(n):
-            frame = int(index[row])
+    out = sys.stdout
+    with open_recording(args.recording) as rec:
+        for frame in rec.frames:
             if (first and frame < int(first)) or (last and frame >= int(last)):
                 continue
-            rows = pairs[offsets[row]:offsets[row + 1]]
+            rows = rec.pairs(frame)
             if args.summary:
                 if len(rows):
                     tris = {}

@@ -4,8 +4,8 @@
 Usage: trace_plot_times.py RUN.h5 [-o times.png] [--stage total]
 
 One point per frame (x: scene frame, y: the stage's milliseconds from /frames/ms/<stage>),
-coloured by the decision system's mode (/frames/decision/mode, schema 1.2, on the frames it
-decided: "mode 1" / "mode 2") and by /frames/method on the others, with a legend. Writes a PNG
+coloured by the decision system's mode (collidescope.open's stats["mode"], from
+/frames/decision/mode, schema 1.2, on the frames it decided: "mode 1" / "mode 2") and by /frames/method on the others, with a legend. Writes a PNG
 (matplotlib, Agg).
 """
 import argparse
@@ -16,7 +16,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from trace_common import attr_text, frames_complete, methods, open_recording  # noqa: E402
+from trace_common import open_recording  # noqa: E402
 
 
 def main():
@@ -25,18 +25,16 @@ def main():
     parser.add_argument("-o", "--output", default="times.png")
     parser.add_argument("--stage", default="total", help="a dataset of /frames/ms (default total)")
     args = parser.parse_args()
-    with open_recording(args.recording) as f:
-        if args.stage not in f["frames/ms"]:
-            sys.exit("%s: no stage %s (stages: %s)" % (args.recording, args.stage, ", ".join(f["frames/ms"])))
-        n = frames_complete(f)
-        frames = f["frames/index"][:n]
-        ms = f["frames/ms/" + args.stage][:n]
-        unit = attr_text(f["frames/ms/" + args.stage], "unit")
-        per_frame = methods(f, n)
-        if "frames/decision/mode" in f:
-            present = f["frames/decision/present"][:n]
-            mode = f["frames/decision/mode"][:n]
-            per_frame = ["mode %d" % int(m) if p else name for p, m, name in zip(present, mode, per_frame)]
+    with open_recording(args.recording) as rec:
+        stats = rec.stats
+        if args.stage not in stats["ms"]:
+            sys.exit("%s: no stage %s (stages: %s)" % (args.recording, args.stage, ", ".join(stats["ms"])))
+        n = len(rec)
+        frames = stats["frame"]
+        ms = stats["ms"][args.stage]
+        unit = rec.unit("frames/ms/" + args.stage)
+        # The decision system's mode on the frames it decided, the method on the others.
+        per_frame = ["mode %d" % m if m else str(name) for m, name in zip(stats["mode"], stats["method"])]
     fig, ax = plt.subplots(figsize=(10, 4))
     for name in sorted(set(per_frame)):
         xs = [x for x, m in zip(frames, per_frame) if m == name]

@@ -37,6 +37,10 @@ struct ObjectFrame {
     std::size_t triangle_count() const { return topology->triangles.size(); }
 };
 
+/// A revision number no other Topology of this process has had (thread-safe): for a
+/// Topology built outside a FrameSource (the embedding facade's objects).
+std::uint64_t next_topology_revision();
+
 /// All objects of one frame, in input order.
 struct Frame {
     std::uint32_t index = 0;  ///< frame number, from 0

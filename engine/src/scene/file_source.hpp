@@ -28,7 +28,4 @@ struct FileObject {
 std::shared_ptr<FrameSource> make_file_source(std::vector<FileObject> objects,
                                               std::uint32_t frame_count);
 
-/// A revision number no other Topology of this process has had (thread-safe).
-std::uint64_t next_topology_revision();
-
 }  // namespace collidescope

@@ -1,0 +1,243 @@
+"""collidescope.open: a recording (docs/recording.md) read with h5py and numpy alone.
+
+Frames are named by their scene frame number, as in `check --pairs` (for a Session's recording,
+0, 1, 2, ... in step order); `rec.frames` lists them. Only complete frames count: a recording
+still being written, or killed, has every dataset up to its last flushed frame (the rule of
+docs/recording.md, "Frames complete"), and `refresh()` picks up frames written since.
+"""
+import h5py
+import numpy as np
+
+SCHEMA = "collidescope-trace"
+MAJOR = 1
+METHOD_GROUPS = ("gpu", "aabb", "decision", "hybrid")
+CSR_OFFSETS = ("collisions/offsets", "gpu/pass_offsets", "gpu/survivor_offsets", "gpu/depth/image_offsets")
+
+
+class RecordingError(ValueError):
+    """A file that is not a readable collidescope recording (one line naming it)."""
+
+
+def attr_text(obj, name, default=None):
+    """String attribute NAME of OBJ as str (schema 1.2 writes fixed-length strings, which h5py
+    returns as bytes; 1.0 and 1.1 wrote variable-length ones, returned as str)."""
+    value = obj.attrs.get(name, default)
+    if isinstance(value, (bytes, np.bytes_)):
+        return value.decode("utf-8")
+    return value
+
+
+def open(path):  # noqa: A001  (collidescope.open, like h5py.File or gzip.open)
+    """Opens the recording at PATH read-only (SWMR, so one still being written or killed opens)."""
+    return Recording(path)
+
+
+class Recording:
+    """A collidescope recording: len(rec) complete frames, rec.frames, rec.objects,
+    rec.pairs(frame), rec.positions(frame, obj), rec.triangles(frame, obj), rec.stats,
+    rec.depth(frame), rec.attrs. A context manager; close() releases the file."""
+
+    def __init__(self, path):
+        self.path = str(path)
+        self._file = _open_file(self.path)
+        try:
+            self._check_schema()
+            self.objects = [attr_text(self._file["objects/%d" % k], "name", str(k))
+                            for k in range(len(self._file["objects"]))]
+            self.refresh()
+        except (KeyError, OSError, ValueError) as error:
+            self._file.close()
+            if isinstance(error, RecordingError):
+                raise
+            raise RecordingError("%s: not a readable collidescope recording (%s)" % (self.path, error)) from None
+
+    # -- the file as a whole ---------------------------------------------------------------
+
+    def refresh(self):
+        """Re-reads the frame count (SWMR: frames flushed since the file was opened)."""
+        for name in self._counted_datasets():
+            self._file[name].refresh()
+        self._frames_complete = self._count_frames()
+        self._frames = self._file["frames/index"][: self._frames_complete].astype(np.int64)
+        self._rows = {int(frame): row for row, frame in enumerate(self._frames)}
+        self._stats = None
+        return self
+
+    def __len__(self):
+        return self._frames_complete
+
+    @property
+    def frames(self):
+        """Scene frame number of every complete frame, ascending (an int64 array)."""
+        return self._frames.copy()
+
+    @property
+    def attrs(self):
+        """The root attributes (docs/recording.md), strings as str."""
+        return {name: attr_text(self._file, name) for name in self._file.attrs}
+
+    @property
+    def finished(self):
+        """True when the writer closed the file cleanly (not killed, not still writing)."""
+        return int(self._file.attrs.get("finished", 0)) == 1
+
+    def unit(self, dataset):
+        """The `unit` attribute of DATASET (a path such as "frames/ms/total" or "gpu/depth/range")."""
+        return attr_text(self._file[dataset], "unit")
+
+    def close(self):
+        self._file.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def __repr__(self):
+        return "<collidescope.Recording %r: %d frames, %d objects>" % (self.path, len(self), len(self.objects))
+
+    # -- per frame -------------------------------------------------------------------------
+
+    def pairs(self, frame):
+        """The colliding pairs of FRAME: an (N, 4) int64 array of objA triA objB triB rows,
+        sorted (check --pairs without the frame column)."""
+        row = self._row(frame)
+        a, b = (int(v) for v in self._file["collisions/offsets"][row:row + 2])
+        return self._file["collisions/pairs"][a:b].astype(np.int64).reshape(-1, 4)
+
+    def positions(self, frame, obj):
+        """Object OBJ's vertex positions at FRAME: a (V, 3) float32 array (as recorded)."""
+        row = self._row(frame)
+        group = self._object(obj)
+        a, b = (int(v) for v in group["vertex_offsets"][row:row + 2])
+        if a == b:
+            raise ValueError("%s: the positions of frame %d were not recorded (dropped by --budget)" % (self.path, frame))
+        return group["positions"][a:b]
+
+    def triangles(self, frame, obj):
+        """Object OBJ's triangles in force at FRAME: a (T, 3) int64 array of vertex indices."""
+        frame_number = int(self._frames[self._row(frame)])
+        group = self._object(obj)
+        starts = group["topology_from_frame"][:]
+        topology = max(i for i, start in enumerate(starts) if start <= frame_number)
+        a, b = (int(v) for v in group["topology_offsets"][topology:topology + 2])
+        return group["triangles"][a:b].astype(np.int64)
+
+    def depth_count(self, frame):
+        """How many depth images FRAME has (0 where none were recorded), without reading them."""
+        row = self._row(frame)
+        if "gpu/depth/image_offsets" not in self._file:
+            return 0
+        first, end = (int(v) for v in self._file["gpu/depth/image_offsets"][row:row + 2])
+        return end - first
+
+    def depth(self, frame):
+        """The GPU cull's depth images recorded at FRAME (record --depth every:N), as a list of
+        dicts: level (0 objects, 1 triangles), view (axis), width, height, near, far and depth
+        (height x width window depths in [0, 1], row 0 at the bottom; 1 where nothing was
+        drawn). Empty where none were recorded."""
+        row = self._row(frame)
+        if "gpu/depth/image_offsets" not in self._file:
+            return []
+        d = self._file["gpu/depth"]
+        first, end = (int(v) for v in d["image_offsets"][row:row + 2])
+        return [self._depth_image(d, i) for i in range(first, end)]
+
+    # -- per-frame stats -------------------------------------------------------------------
+
+    @property
+    def stats(self):
+        """Per-frame stats as numpy arrays, one entry per complete frame: "frame" (scene frame
+        numbers), "method" (names), "mode" (1 or 2 where the decision system ran, 0 elsewhere),
+        "ms" and "counts" (dicts: the names of `check --stats`), and "gpu", "aabb", "decision",
+        "hybrid" (dicts of float64 arrays, NaN on frames whose method did not fill them) where
+        the file has them."""
+        if self._stats is None:
+            self._stats = self._read_stats()
+        return self._stats
+
+    # -- internals -------------------------------------------------------------------------
+
+    def _check_schema(self):
+        if attr_text(self._file, "schema") != SCHEMA:
+            raise RecordingError("%s: not a collidescope recording (no schema attribute %r)" % (self.path, SCHEMA))
+        major = int(self._file.attrs["schema_version_major"])
+        if major > MAJOR:
+            raise RecordingError("%s: schema version %d is newer than this reader reads (%d)" % (self.path, major, MAJOR))
+
+    def _counted_datasets(self):
+        """Every dataset whose length bounds the complete frames (docs/recording.md)."""
+        f = self._file
+        names = ["frames/index", "frames/method"]
+        for group in ("frames/ms", "frames/counts") + tuple("frames/" + g for g in METHOD_GROUPS):
+            if group in f:
+                names += [group + "/" + member for member in f[group]]
+        names += [o for o in CSR_OFFSETS if o in f]
+        names += ["objects/%d/vertex_offsets" % k for k in range(len(self.objects))]
+        return names
+
+    def _count_frames(self):
+        lengths = []
+        for name in self._counted_datasets():
+            length = len(self._file[name])
+            is_offsets = name in CSR_OFFSETS or name.endswith("vertex_offsets")
+            lengths.append(length - 1 if is_offsets else length)
+        return max(0, min(lengths))
+
+    def _row(self, frame):
+        row = self._rows.get(int(frame))
+        if row is None:
+            recorded = "none" if not len(self) else "%d..%d" % (self._frames[0], self._frames[-1])
+            raise IndexError("%s: frame %d is not recorded (frames %s)" % (self.path, frame, recorded))
+        return row
+
+    def _object(self, obj):
+        if not 0 <= int(obj) < len(self.objects):
+            raise IndexError("%s: no object %d (it has %d)" % (self.path, obj, len(self.objects)))
+        return self._file["objects/%d" % int(obj)]
+
+    def _depth_image(self, d, i):
+        level, view, width, height = (int(v) for v in d["info"][i])
+        near, far = (float(v) for v in d["range"][i])
+        p0, p1 = (int(v) for v in d["pixel_offsets"][i:i + 2])
+        if p1 - p0 != width * height:
+            raise RecordingError("%s: depth image %d has %d pixels for %dx%d" % (self.path, i, p1 - p0, width, height))
+        depth = d["pixels"][p0:p1].astype(np.float64).reshape(height, width) / 65535.0
+        return {"level": level, "view": view, "width": width, "height": height, "near": near, "far": far,
+                "depth": depth}
+
+    def _read_stats(self):
+        f, n = self._file, len(self)
+        codes = h5py.check_enum_dtype(f["frames/method"].dtype)
+        names = {code: name for name, code in codes.items()}
+        stats = {
+            "frame": self._frames.copy(),
+            "method": np.array([names[int(c)] for c in f["frames/method"][:n]], dtype=str),
+            "ms": {stage: f["frames/ms/" + stage][:n] for stage in f["frames/ms"]},
+            "counts": {count: f["frames/counts/" + count][:n] for count in f["frames/counts"]},
+        }
+        for group in METHOD_GROUPS:
+            if "frames/" + group not in f:
+                continue
+            present = f["frames/%s/present" % group][:n].astype(bool)
+            stats[group] = {name: np.where(present, f["frames/%s/%s" % (group, name)][:n], np.nan)
+                            for name in f["frames/" + group] if name != "present"}
+            stats[group]["present"] = present
+        mode = np.zeros(n, dtype=np.int64)
+        if "decision" in stats:
+            decided = stats["decision"]["present"]
+            mode[decided] = stats["decision"]["mode"][decided].astype(np.int64)
+        stats["mode"] = mode
+        return stats
+
+
+def _open_file(path):
+    try:
+        return h5py.File(path, "r", swmr=True)
+    except OSError:
+        pass
+    try:
+        return h5py.File(path, "r")
+    except OSError as error:
+        raise RecordingError("%s: cannot open as HDF5 (%s)" % (path, error)) from None

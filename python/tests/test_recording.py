@@ -1,0 +1,114 @@
+"""collidescope.open: a recording's frames, pairs, positions, stats and depth images, from a
+Session's recording, from `collidescope record`, while it is written and after a kill."""
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import numpy as np
+import pytest
+
+import collidescope
+from conftest import check_pairs, run_cli
+
+
+def test_a_sessions_recording_holds_its_frames(tmp_path, cli):
+    scene = collidescope.scene("C:small")
+    path = str(tmp_path / "run.h5")
+    stepped, stats = [], []
+    with collidescope.Session(scene.triangles(), method="adaptive", record=path, names=scene.objects) as s:
+        for frame in range(len(scene)):
+            stepped.append(s.step(scene.positions(frame)))
+            stats.append(s.stats)
+    code, out, err = run_cli(cli, "validate", path)
+    assert code == 0, out + err
+    rec = collidescope.open(path)
+    assert len(rec) == len(scene) and rec.finished
+    assert list(rec.frames) == list(range(len(scene)))
+    assert rec.objects == scene.objects
+    for frame in range(len(scene)):
+        assert rec.pairs(frame).dtype == np.int64
+        assert np.array_equal(rec.pairs(frame), stepped[frame])
+        for obj in range(2):
+            assert np.array_equal(rec.positions(frame, obj), scene.positions(frame)[obj].astype(np.float32))
+            assert np.array_equal(rec.triangles(frame, obj), scene.triangles(frame)[obj])
+    assert sum(len(p) for p in stepped) > 0
+    assert np.array_equal(rec.stats["ms"]["total"], [s["ms"]["total"] for s in stats])
+    assert np.array_equal(rec.stats["counts"]["colliding_pairs"], [len(p) for p in stepped])
+    assert list(rec.stats["method"]) == [s["method"] for s in stats]
+    assert list(rec.stats["mode"]) == [s["decision"]["mode"] for s in stats]
+    assert rec.depth(0) == []
+    with pytest.raises(IndexError, match="frame 16 is not recorded"):
+        rec.pairs(16)
+
+
+def test_a_record_recording_equals_check(tmp_path, cli):
+    code, _, err = run_cli(cli, "record", "--scene", "demo:small", "--frames", "4:12", "--method", "aabb",
+                           "-o", "run.h5", "-q", cwd=tmp_path)
+    assert code == 0, err
+    rec = collidescope.open(tmp_path / "run.h5")
+    expected = check_pairs(cli, "demo:small", "--frames", "4:12", "--method", "aabb")
+    assert list(rec.frames) == list(range(4, 12))
+    got = np.vstack([np.hstack([np.full((len(rec.pairs(f)), 1), f), rec.pairs(f)]) for f in rec.frames])
+    assert len(expected) > 0 and np.array_equal(got, expected)
+    assert set(rec.stats["method"]) == {"aabb"} and not rec.stats["mode"].any()
+    assert rec.stats["aabb"]["present"].all()
+
+
+def test_depth_images(tmp_path, cli):
+    code, _, err = run_cli(cli, "record", "--scene", "C:small", "--method", "gpu", "--gpu-resolution", "64",
+                           "--depth", "every:2", "--frames", "0:3", "-o", "gpu.h5", "-q", cwd=tmp_path)
+    assert code == 0, err
+    rec = collidescope.open(tmp_path / "gpu.h5")
+    images = rec.depth(2)
+    assert images and rec.depth(1) == []
+    image = images[0]
+    assert image["depth"].shape == (image["height"], image["width"]) == (64, 64)
+    assert 0 <= image["depth"].min() < 1 and image["depth"].max() <= 1
+    assert rec.stats["gpu"]["present"].all() and (rec.stats["gpu"]["queries"] > 0).all()
+
+
+WRITER = r"""
+import sys, time
+import numpy as np
+import collidescope
+scene = collidescope.scene("C:small")
+s = collidescope.Session(scene.triangles(), method="aabb", record=sys.argv[1])
+pairs = [s.step(scene.positions(f)) for f in range(int(sys.argv[2]))]
+np.savez(sys.argv[1] + ".npz", *pairs)
+print("ready", flush=True)
+time.sleep(600)
+"""
+
+
+def test_a_recording_being_written_and_then_killed(tmp_path):
+    path = str(tmp_path / "live.h5")
+    frames = 6
+    child = subprocess.Popen([sys.executable, "-c", WRITER, path, str(frames)], stdout=subprocess.PIPE, text=True,
+                             env=dict(os.environ))
+    try:
+        assert child.stdout.readline().strip() == "ready"
+        rec = collidescope.open(path)
+        deadline = time.time() + 60
+        while len(rec.refresh()) < frames and time.time() < deadline:
+            time.sleep(0.05)
+        assert len(rec) == frames and not rec.finished  # still being written
+        rec.close()
+    finally:
+        child.send_signal(signal.SIGKILL)
+        child.wait()
+    stepped = np.load(path + ".npz")
+    with collidescope.open(path) as rec:
+        assert len(rec) == frames and not rec.finished
+        for frame in range(frames):
+            assert np.array_equal(rec.pairs(frame), stepped["arr_%d" % frame])
+        assert rec.stats["ms"]["total"].shape == (frames,)
+    assert sum(len(stepped["arr_%d" % f]) for f in range(frames)) > 0
+
+
+def test_not_a_recording(tmp_path):
+    text = tmp_path / "notes.h5"
+    text.write_text("not hdf5")
+    with pytest.raises(collidescope.RecordingError, match=r"notes.h5: cannot open as HDF5"):
+        collidescope.open(text)
