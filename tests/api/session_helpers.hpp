@@ -1,7 +1,7 @@
 #pragma once
 // Helpers of the facade's tests: run a SceneFrames through a Session, pairs as check's TSV rows.
 
-#include "app/cli_runner.hpp"
+#include "support/cli_runner.hpp"
 
 #include "collidescope/scene_frames.hpp"
 #include "collidescope/session.hpp"
