@@ -59,9 +59,10 @@ TEST(ClothFamily, Deterministic) {
 
 TEST(ClothFamily, RestingClothIsFlatAndNeverCollides) {
     const Scene scene = make_builtin_scene("cloth-rest:small");
-    for (std::uint32_t f = 0; f < scene.source->frame_count(); ++f)
-        for (const Vec3& v : scene.source->frame(f).objects[0].vertices)
-            ASSERT_EQ(v.z(), static_cast<double>(0.3f)) << "frame " << f;
+    for (std::uint32_t f = 0; f < scene.source->frame_count(); ++f) {
+        const Frame frame = scene.source->frame(f);  // a range-for over a temporary's member dangles
+        for (const Vec3& v : frame.objects[0].vertices) ASSERT_EQ(v.z(), static_cast<double>(0.3f)) << "frame " << f;
+    }
     for (std::uint64_t c : colliding_per_frame(scene)) EXPECT_EQ(c, 0u);
 }
 
