@@ -65,6 +65,15 @@ struct Scene {
     std::uint64_t seed = 0;           ///< generator seed (0 for files)
     bool self_collision = false;      ///< default for --self (a manifest or data set may set it)
     std::shared_ptr<FrameSource> source;
+
+    // What the inputs say about time and orientation. Animated model files and point caches
+    // fill these; frame sequences, static meshes and generators leave them empty.
+    /// frame_times[k]: frame k's time in seconds from the clip's start (size frame_count()),
+    /// or empty when the inputs carry no time.
+    std::vector<double> frame_times;
+    double fps = 0;        ///< sampling rate of frame_times; 0 when the inputs do not say
+    std::string clip;      ///< the source animation clip's name ("" when none)
+    char up_axis = 0;      ///< 'x', 'y' or 'z' when a file says which axis is up; 0 otherwise
 };
 
 /// A source over frames held in memory (tests, benchmarks, generators that precompute).
