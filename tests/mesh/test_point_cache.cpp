@@ -225,5 +225,52 @@ TEST(PointCacheReaderErrors, MissingFilesAndOtherExtensions) {
     EXPECT_THAT(input_error([&] { PointCacheReader reader(dir / "folder.mdd"); }), HasSubstr("folder.mdd: not a regular file"));
 }
 
+// Random bytes after a valid or random header, of random sizes: every file either opens and
+// reads every frame, or throws InputError; nothing else (seed printed on failure).
+TEST(PointCacheReaderErrors, RandomBytesOpenOrSayWhy) {
+    TempDir dir;
+    constexpr std::uint64_t k_seed = 28;
+    std::mt19937_64 rng(k_seed);
+    int opened = 0, refused = 0;
+    for (int round = 0; round < 400; ++round) {
+        SCOPED_TRACE("seed " + std::to_string(k_seed) + ", round " + std::to_string(round));
+        const bool mdd = round % 2 == 1;
+        const auto frames = static_cast<std::int32_t>(rng() % 4) - 1;  // -1 .. 2
+        const auto points = static_cast<std::int32_t>(rng() % 4) - 1;
+        ByteWriter bytes(mdd);
+        if (mdd) {
+            bytes.put(frames);
+            bytes.put(points);
+            for (std::int32_t k = 0; k < frames && rng() % 8 != 0; ++k) bytes.put(static_cast<float>(k));
+        } else {
+            bytes.text(std::string_view("POINTCACHE2\0", 12));
+            bytes.put<std::int32_t>(rng() % 8 == 0 ? 2 : 1);
+            bytes.put(points);
+            bytes.put<float>(0.0f);
+            bytes.put<float>(rng() % 8 == 0 ? 0.0f : 1.0f);
+            bytes.put(frames);
+        }
+        // Often exactly what the counts need, else a random length.
+        const bool exact = frames > 0 && points > 0 && rng() % 2 == 0;
+        const std::size_t payload = exact ? std::size_t(frames) * std::size_t(points) * 12 : rng() % 100;
+        for (std::size_t i = 0; i < payload; ++i) bytes.put<std::uint8_t>(static_cast<std::uint8_t>(rng() % 3 == 0 ? rng() : 0));
+        const std::filesystem::path file = dir / (mdd ? "random.mdd" : "random.pc2");
+        write_bytes(file, bytes.bytes());
+        try {
+            PointCacheReader reader(file);
+            for (std::uint32_t k = 0; k < reader.layout().frame_count; ++k) {
+                EXPECT_EQ(reader.read_frame(k).size(), reader.layout().point_count);
+            }
+            ++opened;
+        } catch (const InputError& error) {
+            EXPECT_THAT(error.what(), HasSubstr(file.string() + ": "));
+            ++refused;
+        }
+    }
+    // Both outcomes happen, so the test exercises both.
+    EXPECT_GT(opened, 20);
+    EXPECT_GT(refused, 20);
+}
+
 }  // namespace
 }  // namespace collidescope
