@@ -10,7 +10,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <random>
 
@@ -223,6 +225,32 @@ TEST(PointCacheReaderErrors, MissingFilesAndOtherExtensions) {
                 HasSubstr("body.obj: not a point cache (expected a .pc2 or .mdd file)"));
     std::filesystem::create_directories(dir / "folder.mdd");
     EXPECT_THAT(input_error([&] { PointCacheReader reader(dir / "folder.mdd"); }), HasSubstr("folder.mdd: not a regular file"));
+}
+
+// Resident memory of this process in bytes (Linux: /proc/self/statm, second field in pages).
+std::uint64_t resident_bytes() {
+    std::ifstream statm("/proc/self/statm");
+    std::uint64_t size = 0, resident = 0;
+    statm >> size >> resident;
+    return resident * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
+}
+
+// A 1.2 GB cache (a sparse file: 100,000 samples of 1,000 points at the origin) opens and
+// reads any frame without the cache ever sitting in memory.
+TEST(PointCacheReader, ALargeCacheIsReadAFrameAtATime) {
+    TempDir dir;
+    const std::vector<std::byte> header = pc2_bytes(1, 1000, 0, 1, 100000, 0);
+    write_bytes(dir / "large.pc2", header);
+    std::filesystem::resize_file(dir / "large.pc2", header.size() + std::uint64_t{100000} * 1000 * 12);
+    const std::uint64_t before = resident_bytes();
+    PointCacheReader reader(dir / "large.pc2");
+    ASSERT_EQ(reader.layout().frame_count, 100000u);
+    for (const std::uint32_t k : {99999u, 0u, 54321u}) {
+        const std::vector<Vec3> frame = reader.read_frame(k);
+        ASSERT_EQ(frame.size(), 1000u);
+        EXPECT_EQ(frame[999], Vec3::Zero());
+    }
+    EXPECT_LT(resident_bytes() - std::min(before, resident_bytes()), std::uint64_t{64} << 20);
 }
 
 // Random bytes after a valid or random header, of random sizes: every file either opens and
