@@ -42,13 +42,17 @@ TEST(AssimpChecks, OffCountsThatTheFileCannotHoldAreRefusedAtOnce) {
     const std::string body_bytes = std::to_string(std::string(k_cube_body).size() + 3);  // " 0\n" + body
     EXPECT_EQ(input_error([&] { read_mesh_file(dir / "lying.off"); }),
               (dir / "lying.off").string() + ": header: 353535235358 vertices and 6 faces cannot fit in the " +
-                  body_bytes + " bytes after the counts (each vertex needs at least 6, each face 2)");
+                  body_bytes + " bytes after the counts (each takes a line of at least 2 bytes)");
     EXPECT_THAT(input_error([&] { read_mesh_file(dir / "lying.off.gz"); }),
                 HasSubstr("lying.off.gz: header: 353535235358 vertices and 6 faces cannot fit"));
     // Counts that fit 32 bits but not the file, after comments.
     write_text(dir / "faces.off", std::string("# a comment\nOFF # another\n8 600 0\n") + k_cube_body);
     EXPECT_THAT(input_error([&] { read_mesh_file(dir / "faces.off"); }),
                 HasSubstr("faces.off: header: 8 vertices and 600 faces cannot fit"));
+    // No keyword: assimp takes the first numbers as the counts.
+    write_text(dir / "bare.off", std::string("353535235358 6 0\n") + k_cube_body);
+    EXPECT_THAT(input_error([&] { read_mesh_file(dir / "bare.off"); }),
+                HasSubstr("bare.off: header: 353535235358 vertices and 6 faces cannot fit"));
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
 }
 
@@ -63,6 +67,9 @@ TEST(AssimpChecks, OffFilesThatFitStillLoad) {
         EXPECT_EQ(mesh.triangles.size(), 12u) << name;
     }
     EXPECT_EQ(read_mesh_file(dir / "coff.off").triangles.size(), 1u);
+    // The tightest file: one-character numbers, no line end after the last face.
+    write_text(dir / "tight.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2");
+    EXPECT_EQ(read_mesh_file(dir / "tight.off").vertices, (std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}));
 }
 
 TEST(AssimpChecks, ASceneWithANullNodeIsRefusedNotWalked) {

@@ -2,7 +2,7 @@
 // What read_with_assimp checks around assimp (engine/src/mesh, private).
 //
 // assimp trusts its inputs more than we may: some importers allocate what a header declares
-// before reading it (an OFF file that declares 3.5 billion vertices in 309 bytes runs for
+// before reading it (an OFF file that declares 353 billion vertices in 309 bytes runs for
 // minutes), some hand back scenes with null pointers (the RAW importer leaves a null child
 // node), and one prints to std::cerr (the OpenGEX parser). So: counts are checked against the
 // file's size before assimp sees the file, the scene is checked before anything walks it, and
