@@ -40,14 +40,16 @@ private:
     template <class T>
     void check_array(T* const* array, unsigned count, const std::string& owner, const char* what) const {
         if (count == 0) return;
-        if (array == nullptr) fail(owner + " has " + std::to_string(count) + " " + what + " but no array of them");
+        check_values(array, count, owner, what);
         for (unsigned i = 0; i < count; ++i) {
-            if (array[i] == nullptr) fail(owner + ": " + what + " " + std::to_string(i) + " of " + std::to_string(count) + " is null");
+            if (array[i] != nullptr) continue;
+            fail(owner + ": " + what + " " + std::to_string(i) + " of " + std::to_string(count) + " is null");
         }
     }
     template <class T>
     void check_values(const T* array, unsigned count, const std::string& owner, const char* what) const {
-        if (count != 0 && array == nullptr) fail(owner + " has " + std::to_string(count) + " " + what + " but no array of them");
+        if (count == 0 || array != nullptr) return;
+        fail(owner + " has " + std::to_string(count) + " " + what + " but no array of them");
     }
 
     static std::string named(const char* kind, unsigned index, const aiString& name) {
@@ -62,7 +64,8 @@ private:
         check_values(mesh.mVertices, mesh.mNumVertices, owner, "vertices");
         check_values(mesh.mFaces, mesh.mNumFaces, owner, "faces");
         for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
-            check_values(mesh.mFaces[f].mIndices, mesh.mFaces[f].mNumIndices, owner + " face " + std::to_string(f), "corners");
+            const aiFace& face = mesh.mFaces[f];
+            check_values(face.mIndices, face.mNumIndices, owner + " face " + std::to_string(f), "corners");
         }
         check_array(mesh.mBones, mesh.mNumBones, owner, "bones");
         for (unsigned b = 0; b < mesh.mNumBones; ++b) {
@@ -92,7 +95,8 @@ private:
         check_array(animation.mMeshChannels, animation.mNumMeshChannels, owner, "mesh channels");
         for (unsigned c = 0; c < animation.mNumMeshChannels; ++c) {
             const aiMeshAnim& channel = *animation.mMeshChannels[c];
-            check_values(channel.mKeys, channel.mNumKeys, owner + " " + named("mesh channel", c, channel.mName), "keys");
+            const std::string where = owner + " " + named("mesh channel", c, channel.mName);
+            check_values(channel.mKeys, channel.mNumKeys, where, "keys");
         }
         check_array(animation.mMorphMeshChannels, animation.mNumMorphMeshChannels, owner, "morph channels");
         for (unsigned c = 0; c < animation.mNumMorphMeshChannels; ++c) {

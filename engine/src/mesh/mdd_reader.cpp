@@ -27,7 +27,9 @@ std::vector<double> frame_times(const CacheFile& file, std::uint32_t frames) {
     double first = 0;
     for (std::uint32_t k = 0; k < frames; ++k) {
         const double time = load4<float>(&raw[std::size_t{k} * 4], true);
-        if (!std::isfinite(time)) fail(file, "time of frame " + std::to_string(k) + " is not finite (" + number(time) + ")");
+        if (!std::isfinite(time)) {
+            fail(file, "time of frame " + std::to_string(k) + " is not finite (" + number(time) + ")");
+        }
         if (k == 0) first = time;
         times[k] = time - first;
         if (k > 0 && times[k] < times[k - 1]) {
