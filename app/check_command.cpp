@@ -129,7 +129,8 @@ Command add_check_command(CLI::App& app) {
     check->footer(k_footer);
     check->add_option("inputs", options->inputs,
                       "Mesh files (static over all frames), frame patterns (cloth.%04d.ply, "
-                      "cloth.####.obj) or scene.json manifests; one object per mesh or pattern")
+                      "cloth.####.obj), meshes with a point cache (body.obj@body.pc2, .pc2 or .mdd) "
+                      "or scene.json manifests; one object per mesh or pattern")
         ->type_name("INPUT");
     check->add_option("--scene", options->scene,
                       "A built-in scene instead of INPUT files: NAME[:PRESET] (" +

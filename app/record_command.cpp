@@ -168,7 +168,7 @@ Command add_record_command(CLI::App& app) {
     auto options = std::make_shared<RecordOptions>();
     CLI::App* record = app.add_subcommand("record", "Record a session: every frame's pairs, stats and geometry to HDF5");
     record->footer(k_footer);
-    record->add_option("inputs", options->inputs, "Mesh files, frame patterns or scene.json manifests (as for check)")
+    record->add_option("inputs", options->inputs, "Mesh files, frame patterns, meshes with a point cache (body.obj@body.pc2) or scene.json manifests (as for check)")
         ->type_name("INPUT");
     record->add_option("--scene", options->scene, "A built-in scene instead of INPUT files: NAME[:PRESET] (" +
                                                       builtin_scene_list() + ")")

@@ -11,7 +11,11 @@
 #include "collidescope/scene.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace collidescope::fuzz {
 namespace {
@@ -35,8 +39,29 @@ std::string obj_text(const MeshData& mesh) {
     return text;
 }
 
-// cloth.0000.ply .. cloth.0002.ply, body.0000.obj .. body.0002.obj, floor.ply (static) and
-// sub/cap.1.obj, sub/cap.2.obj: what the seed manifests name. A gap in a pattern's numbers is
+// tet.pc2: three frames of a tetrahedron's 4 points (floor.ply's count), for {"mesh", "cache"}.
+std::vector<std::byte> tetrahedron_pc2() {
+    std::vector<std::byte> bytes;
+    const auto put = [&](std::uint32_t bits) {  // little-endian
+        for (int b = 0; b < 4; ++b) bytes.push_back(static_cast<std::byte>(bits >> (8 * b)));
+    };
+    for (const char c : std::string_view("POINTCACHE2\0", 12)) bytes.push_back(static_cast<std::byte>(c));
+    constexpr std::uint32_t k_samples = 3;
+    put(1);                               // version
+    put(4);                               // points
+    put(std::bit_cast<std::uint32_t>(0.0f));  // start frame
+    put(std::bit_cast<std::uint32_t>(1.0f));  // sample rate
+    put(k_samples);
+    for (std::uint32_t f = 0; f < k_samples; ++f) {
+        for (const Vec3& v : tetrahedron(-3 + 0.2 * f).vertices) {
+            for (int axis = 0; axis < 3; ++axis) put(std::bit_cast<std::uint32_t>(static_cast<float>(v[axis])));
+        }
+    }
+    return bytes;
+}
+
+// cloth.0000.ply .. cloth.0002.ply, body.0000.obj .. body.0002.obj, floor.ply (static),
+// sub/cap.1.obj, sub/cap.2.obj and tet.pc2: what the seed manifests name. A gap in a pattern's numbers is
 // an error (tests/app/test_error_table.cpp), so the valid seeds hold none.
 const std::filesystem::path& scene_dir() {
     static const std::filesystem::path dir = [] {
@@ -49,6 +74,7 @@ const std::filesystem::path& scene_dir() {
             write_file(made / ("body." + number + ".obj"), std::as_bytes(std::span(obj)));
         }
         write_ply(made / "floor.ply", tetrahedron(-3), true);
+        write_file(made / "tet.pc2", tetrahedron_pc2());
         for (int f = 1; f <= 2; ++f) {
             const std::string cap = obj_text(tetrahedron(f));
             write_file(made / "sub" / ("cap." + std::to_string(f) + ".obj"), std::as_bytes(std::span(cap)));

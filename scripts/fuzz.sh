@@ -16,7 +16,7 @@ set -euo pipefail
 
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 BUILD=${FUZZ_BUILD:-$ROOT/build-fuzz}
-TARGETS=(ply obj scene trace)
+TARGETS=(ply obj scene trace cache)
 PACKAGES=(clang-14 libclang-rt-14-dev)
 
 log() { echo "fuzz: $*"; }

@@ -22,8 +22,9 @@ PACKAGES=(
   libosmesa6-dev libegl-dev libopengl-dev libimgui-dev libstb-dev fonts-dejavu-core
   # the EGL backend (--gl egl): Mesa's EGL vendor and its llvmpipe driver (no GPU needed)
   libegl-mesa0 libgl1-mesa-dri
-  # data: the Stanford bunny (/usr/share/glmark2/models/bunny.obj)
-  glmark2-data
+  # data: the Stanford bunny (/usr/share/glmark2/models/bunny.obj); real models of every
+  # format assimp reads (/usr/share/assimp/models: the Corpus.AssimpTestmodels tests)
+  glmark2-data assimp-testmodels
   # peers of the aabb method (bench/peers/bench_bvh_peers, built only when present)
   libembree-dev libfcl-dev
   # trace scripts and their tests

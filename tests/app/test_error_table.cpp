@@ -4,11 +4,14 @@
 
 #include "app/error_cases.hpp"
 #include "mesh/temp_files.hpp"
+#include "support/point_cache_writer.hpp"
 #include "support/scene_builders.hpp"
 
 #include "collidescope/mesh.hpp"
 
 #include <gtest/gtest.h>
+
+#include <limits>
 
 namespace collidescope {
 namespace {
@@ -98,6 +101,14 @@ std::vector<ErrorCase> mesh_cases() {
          {"inf.obj", "vertex 1", "z"}},
         {"other formats (assimp): unreadable", file("broken.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n"),
          check({"broken.stl"}), {"broken.stl", "assimp"}},
+        {"OFF: counts the file cannot hold (assimp would allocate them)",
+         file("huge.off", "OFF\n353535235358 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), check({"huge.off"}),
+         {"huge.off", "header", "353535235358 vertices"}},
+        {"assimp: a scene with a null node (RAW, two groups)", file("two.raw", "a\n0 0 0 1 0 0 0 1 0\n\nb\n0 0 1 1 0 1 0 1 1\n"),
+         check({"two.raw"}), {"two.raw", "broken scene", "node '<RawRoot>'", "children 1 of 2"}},
+        // assimp's OpenGEX parser writes "nullptr returned by creating DDLNode." to std::cerr.
+        {"assimp: no mesh in the file (OpenGEX camera)", file("camera.ogex", "CameraObject {}\n"), check({"camera.ogex"}),
+         {"camera.ogex", "no triangles"}},
     };
 }
 
@@ -149,6 +160,50 @@ std::vector<ErrorCase> scene_cases() {
     };
 }
 
+// Point caches beside good.ply (a 2 x 2 grid sheet: 9 vertices): `good.ply@CACHE`.
+std::vector<ErrorCase> point_cache_cases() {
+    const auto frames = [](std::size_t points, std::size_t count) {
+        return testing::PositionFrames(count, std::vector<Vec3>(points, Vec3(0.5, 0.5, 0.0)));
+    };
+    const auto cut = [](const fs::path& file, std::uintmax_t bytes) { fs::resize_file(file, fs::file_size(file) - bytes); };
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return {
+        {"PC2: cut short", [=](const fs::path& d) { testing::write_pc2(d / "cut.pc2", frames(9, 3)); cut(d / "cut.pc2", 5); },
+         check({"good.ply@cut.pc2"}), {"cut.pc2", "header", "3 samples x 9 points", "truncated"}},
+        {"PC2: counts that lie (bytes left over)",
+         [=](const fs::path& d) {
+             testing::write_pc2(d / "lie.pc2", frames(9, 3));
+             std::ofstream(d / "lie.pc2", std::ios::app) << "extra";
+         },
+         check({"good.ply@lie.pc2"}), {"lie.pc2", "header", "counts are wrong"}},
+        {"PC2: no magic", file("magic.pc2", std::string(40, 'x')), check({"good.ply@magic.pc2"}), {"magic.pc2", "POINTCACHE2"}},
+        {"MDD: cut short", [=](const fs::path& d) { testing::write_mdd(d / "cut.mdd", frames(9, 2), {0, 1}); cut(d / "cut.mdd", 1); },
+         check({"good.ply@cut.mdd"}), {"cut.mdd", "header", "2 frames x 9 points", "truncated"}},
+        {"MDD: NaN time", [=](const fs::path& d) { testing::write_mdd(d / "time.mdd", frames(9, 2), {0.0f, std::nanf("")}); },
+         check({"good.ply@time.mdd"}), {"time.mdd", "time of frame 1", "not finite"}},
+        {"point cache: NaN position in a later frame",
+         [=](const fs::path& d) {
+             testing::PositionFrames positions = frames(9, 3);
+             positions[2][4].y() = nan;
+             testing::write_mdd(d / "nan.mdd", positions, {0.0f, 0.1f, 0.2f});
+         },
+         {"check", "-q", "good.ply@nan.mdd"}, {"nan.mdd", "frame 2", "vertex 4", "coordinate y", "object 'good'"}},
+        {"point cache: vertex count differs from the mesh's",
+         [=](const fs::path& d) { testing::write_pc2(d / "short.pc2", frames(8, 2)); }, check({"good.ply@short.pc2"}),
+         {"good.ply", "9 vertices", "short.pc2", "8 points"}},
+        {"point cache: frame count differs from a sequence's",
+         [=](const fs::path& d) {
+             testing::write_pc2(d / "three.pc2", frames(9, 3));
+             for (int f = 0; f < 2; ++f) write_ply(d / ("seq." + std::to_string(f) + ".ply"), testing::grid_sheet(2, 1.0));
+         },
+         {"check", "seq.%d.ply", "good.ply@three.pc2"}, {"seq.%d.ply", "2 frames", "good.ply@three.pc2", "3 frames"}},
+        {"scene.json: cache without mesh", file("nomesh.json", R"({"objects": [{"pattern": "good.ply", "cache": "x.pc2"}]})"),
+         {"check", "nomesh.json"}, {"nomesh.json", "objects[0].cache", "mesh"}},
+        {"scene.json: missing cache", file("nocache.json", R"({"objects": [{"mesh": "good.ply", "cache": "none.pc2"}]})"),
+         {"check", "nocache.json"}, {"none.pc2", "no such file"}},
+    };
+}
+
 class ErrorTable : public ::testing::Test {
 protected:
     void run_all(const std::vector<ErrorCase>& cases) {
@@ -163,6 +218,8 @@ protected:
 TEST_F(ErrorTable, MeshFilesNameTheFileAndTheElement) { run_all(mesh_cases()); }
 
 TEST_F(ErrorTable, ScenesPatternsAndOptionsNameTheFileAndTheElement) { run_all(scene_cases()); }
+
+TEST_F(ErrorTable, PointCachesNameTheFileAndTheElement) { run_all(point_cache_cases()); }
 
 }  // namespace
 }  // namespace collidescope

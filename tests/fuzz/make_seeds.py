@@ -5,7 +5,7 @@ minimised with `scripts/fuzz.sh merge`; this script says where it started.
 
     tests/fuzz/make_seeds.py OUT_DIR COLLIDESCOPE_BINARY
 
-writes OUT_DIR/{ply,obj,scene,trace}/; the trace seeds are recordings made by the given
+writes OUT_DIR/{ply,obj,scene,trace,cache}/; the trace seeds are recordings made by the given
 `collidescope` binary from small meshes (the committed trace corpus is gzipped, see
 scripts/fuzz.sh)."""
 
@@ -66,7 +66,24 @@ def scenes():
         "mixed": '{"frames": 2, "objects": [{"pattern": "cloth.%04d.ply"}, {"pattern": "body.####.obj", "name": "b"},'
                  ' {"pattern": "sub/cap.%d.obj"}], "self": false}',
         "static": '{"name": "s", "objects": [{"pattern": "floor.ply"}, {"pattern": "sub/../floor.ply"}]}',
+        "cache": '{"objects": [{"mesh": "floor.ply", "cache": "tet.pc2"}, {"pattern": "cloth.%04d.ply"}]}',
     }
+
+
+def pc2(frames):
+    """A PC2 point cache (little-endian; version 1, start frame 0, sample rate 1)."""
+    data = b"POINTCACHE2\0" + struct.pack("<iiffi", 1, len(frames[0]), 0.0, 1.0, len(frames))
+    return data + b"".join(struct.pack("<3f", *p) for frame in frames for p in frame)
+
+
+def mdd(frames, times):
+    """An MDD point cache (big-endian: counts, times, positions)."""
+    data = struct.pack(">ii", len(frames), len(frames[0])) + struct.pack(">%df" % len(times), *times)
+    return data + b"".join(struct.pack(">3f", *p) for frame in frames for p in frame)
+
+
+def tetra_frames(count):
+    return [[(x + 0.25 * f, y, z - 0.5 * f) for x, y, z in TETRA_V] for f in range(count)]
 
 
 def record(binary, out, inputs, *options):
@@ -104,6 +121,8 @@ def main():
     write(f"{out}/obj/forms.obj", obj_forms())
     for name, text in scenes().items():
         write(f"{out}/scene/{name}.json", text)
+    write(f"{out}/cache/tetra.pc2", pc2(tetra_frames(3)))
+    write(f"{out}/cache/tetra.mdd", mdd(tetra_frames(2), [0.0, 1.0 / 24]))
     os.makedirs(f"{out}/trace", exist_ok=True)
     traces(binary, f"{out}/trace")
 

@@ -80,7 +80,7 @@ TEST_P(Corpus, EveryInputReadsOrIsRejected) {
     EXPECT_GT(accepted, 0u) << "every corpus input of " << target << " was rejected";
 }
 
-INSTANTIATE_TEST_SUITE_P(Targets, Corpus, ::testing::Values("ply", "obj", "scene", "trace"));
+INSTANTIATE_TEST_SUITE_P(Targets, Corpus, ::testing::Values("ply", "obj", "scene", "trace", "cache"));
 
 // The seeds (tests/fuzz/make_seeds.py, run here with the built collidescope) are valid files
 // of every form each reader takes: every one must read, or the corpus starts from broken files.
@@ -91,14 +91,14 @@ TEST(Seeds, ValidFilesAreAccepted) {
                                 " " + COLLIDESCOPE_BIN + " >/dev/null";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
     std::size_t seeds = 0;
-    for (const char* target : {"ply", "obj", "scene", "trace"}) {
+    for (const char* target : {"ply", "obj", "scene", "trace", "cache"}) {
         for (const auto& file : std::filesystem::directory_iterator(out / target)) {
             SCOPED_TRACE(file.path().string());
             EXPECT_EQ(entry_named(target)(bytes_of(file.path())), Outcome::Accepted);
             ++seeds;
         }
     }
-    EXPECT_EQ(seeds, 5u + 2u + 4u + 4u);
+    EXPECT_EQ(seeds, 5u + 2u + 5u + 4u + 2u);
     std::filesystem::remove_all(out);
 }
 

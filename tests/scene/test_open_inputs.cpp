@@ -174,7 +174,7 @@ TEST(OpenInputsErrors, MalformedManifests) {
     EXPECT_THAT(error_of(R"({"objects": [)"), HasSubstr(manifest + ": malformed JSON"));
     EXPECT_EQ(error_of(R"([1, 2])"), manifest + ": expected a JSON object at the top level");
     EXPECT_EQ(error_of(R"({"name": "x"})"), manifest + ": objects: missing key");
-    EXPECT_EQ(error_of(R"({"objects": [{"name": "a"}]})"), manifest + ": objects[0].pattern: missing key");
+    EXPECT_EQ(error_of(R"({"objects": [{"name": "a"}]})"), manifest + ": objects[0].pattern: missing key (or \"mesh\")");
     EXPECT_EQ(error_of(R"({"objects": [{"pattern": 7}]})"),
               manifest + ": objects[0].pattern: expected a string, got number 7");
     EXPECT_EQ(error_of(R"({"frames": "ten", "objects": [{"pattern": "m%d.ply"}]})"),

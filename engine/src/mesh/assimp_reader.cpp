@@ -9,6 +9,7 @@
 // Whether vertices are shared is up to each assimp importer (OFF and PLY keep the file's
 // vertices; STL has none to share; OBJ does not, hence our own reader).
 
+#include "mesh/assimp_checks.hpp"
 #include "mesh/fan.hpp"
 
 #include "collidescope/error.hpp"
@@ -122,11 +123,17 @@ const aiScene* import_scene(Assimp::Importer& importer, const std::filesystem::p
 }  // namespace
 
 MeshData read_with_assimp(const std::filesystem::path& file) {
+    check_counts_fit(file);
     Assimp::Importer importer;
-    const aiScene* scene = import_scene(importer, file);
+    const aiScene* scene = nullptr;
+    {
+        const QuietCerr quiet;
+        scene = import_scene(importer, file);
+    }
     if (scene == nullptr) {
         throw InputError(file.string() + ": assimp cannot read it (" + importer.GetErrorString() + ")");
     }
+    validate_assimp_scene(*scene, file);
     return SceneFlattener(*scene, file).flatten();
 }
 

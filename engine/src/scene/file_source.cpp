@@ -50,6 +50,7 @@ private:
     };
 
     ObjectFrame object_frame(ObjectState& object, std::uint32_t index) {
+        if (object.input.cache) return cached_frame(object, index);
         if (object.input.is_static) {
             if (!object.topology) {
                 MeshData mesh = read(object, 0, index);
@@ -63,13 +64,37 @@ private:
         return {object.topology, std::move(mesh.vertices)};
     }
 
+    // The mesh's triangles (read once) with the cache's positions of frame `index`.
+    static ObjectFrame cached_frame(ObjectState& object, std::uint32_t index) {
+        PointCacheReader& cache = *object.input.cache;
+        if (!object.topology) {
+            MeshData mesh = read(object, 0, index);
+            check_cache_matches(object, mesh.vertices.size());
+            share_topology(object, std::move(mesh.triangles), mesh.vertices.size());
+        }
+        try {
+            return {object.topology, cache.read_frame(index)};
+        } catch (const InputError& error) {
+            throw InputError(std::string(error.what()) + " (object '" + object.input.name + "')");
+        }
+    }
+
+    static void check_cache_matches(const ObjectState& object, std::size_t mesh_vertices) {
+        const PointCacheReader& cache = *object.input.cache;
+        if (cache.layout().point_count == mesh_vertices) return;
+        throw InputError(object.input.files.at(0).string() + " has " + std::to_string(mesh_vertices) +
+                         " vertices but its point cache " + cache.file().string() + " has " +
+                         std::to_string(cache.layout().point_count) + " points per frame (object '" +
+                         object.input.name + "')");
+    }
+
     // Reads (and validates) one file; errors gain the object and frame.
     static MeshData read(const ObjectState& object, std::size_t file, std::uint32_t frame) {
         try {
             return read_mesh_file(object.input.files.at(file));
         } catch (const InputError& error) {
             std::string where = "object '" + object.input.name + "'";
-            if (!object.input.is_static) where += ", frame " + std::to_string(frame);
+            if (!object.input.is_static && !object.input.cache) where += ", frame " + std::to_string(frame);
             throw InputError(std::string(error.what()) + " (" + where + ")");
         }
     }

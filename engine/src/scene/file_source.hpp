@@ -3,7 +3,10 @@
 //
 // open_inputs turns the command line into FileObjects; the FileSource reads frame i's files
 // when frame(i) is asked for. A static object's file is read once and repeated every frame.
+// A cached object's mesh is read once for its triangles, and frame i's positions come from
+// its point cache.
 
+#include "collidescope/point_cache.hpp"
 #include "collidescope/scene.hpp"
 
 #include <cstdint>
@@ -20,6 +23,13 @@ struct FileObject {
     std::string origin;                        ///< the file or pattern as given, for messages
     std::vector<std::filesystem::path> files;  ///< one per frame; exactly one when is_static
     bool is_static = false;                    ///< the same mesh in every frame
+    /// A mesh + point cache object: `files` holds the mesh alone (is_static false) and the
+    /// cache's first `cache_frames` frames are the object's frames.
+    std::shared_ptr<PointCacheReader> cache;
+    std::uint32_t cache_frames = 0;
+
+    /// How many frames the object has (1 for a static mesh).
+    std::size_t frame_count() const { return cache ? cache_frames : files.size(); }
 };
 
 /// A FrameSource over `objects` with `frame_count` frames (every sequence object holds at

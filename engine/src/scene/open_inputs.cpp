@@ -3,11 +3,14 @@
 //
 // Manifest format: {"name": str, "frames": F, "objects": [{"name": str, "pattern": str}],
 // "self": bool}. Only "objects" and each object's "pattern" are required; "name" defaults to
-// the manifest's directory name (objects: the pattern's name), "self" to false. Patterns are
-// relative to the manifest's directory. When "frames" is given the scene uses the first F
-// frames of every sequence (a manifest may describe part of a longer cache); a sequence with
-// fewer than F frames is an error. Without it, the frames found are used.
+// the manifest's directory name (objects: the pattern's name), "self" to false. An object may
+// say "mesh" instead of "pattern", and with it "cache": a point cache (.pc2, .mdd) whose frames
+// move the mesh's vertices (docs/point-caches.md). Paths are relative to the manifest's
+// directory. When "frames" is given the scene uses the first F frames of every sequence or
+// cache (a manifest may describe part of a longer cache); one with fewer than F frames is an
+// error. Without it, the frames found are used.
 
+#include "scene/cached_object.hpp"
 #include "scene/file_source.hpp"
 #include "scene/frame_pattern.hpp"
 
@@ -35,6 +38,9 @@ struct SceneInputs {
 
 // A mesh file (static) or a frame pattern (one file per frame), named `name` or after the file.
 FileObject open_object(const std::string& spec, const std::string& name) {
+    if (const std::optional<CacheSpec> cached = parse_cache_spec(spec)) {
+        return open_cached_object(cached->mesh, cached->cache, name);
+    }
     FileObject object;
     object.origin = spec;
     const std::filesystem::path path(spec);
@@ -123,21 +129,30 @@ private:
         const std::string path = "objects[" + std::to_string(index) + "]";
         if (!entry.is_object()) wrong_type(path, "an object", entry);
         const std::optional<std::string> pattern = optional_string(entry, "pattern", path + ".pattern");
-        if (!pattern) fail(path + ".pattern", "missing key");
+        const std::optional<std::string> mesh = optional_string(entry, "mesh", path + ".mesh");
+        const std::optional<std::string> cache = optional_string(entry, "cache", path + ".cache");
+        if (pattern && mesh) fail(path, "give either \"pattern\" or \"mesh\", not both");
+        if (!pattern && !mesh) fail(path + ".pattern", "missing key (or \"mesh\")");
+        if (cache && !mesh) fail(path + ".cache", "needs \"mesh\": the mesh file whose vertices the cache moves");
         const std::string name = optional_string(entry, "name", path + ".name").value_or("");
-        const std::filesystem::path spec = m_file.parent_path() / *pattern;
-        FileObject object = open_object(spec.string(), name);
+        const std::filesystem::path spec = m_file.parent_path() / (pattern ? *pattern : *mesh);
+        FileObject object = cache ? open_cached_object(spec.string(), (m_file.parent_path() / *cache).string(), name)
+                                  : open_object(spec.string(), name);
         if (frames && !object.is_static) use_frames(object, *frames);
         return object;
     }
 
     void use_frames(FileObject& object, std::uint32_t frames) const {
-        if (object.files.size() < frames) {
+        if (object.frame_count() < frames) {
             fail("frames", "asks for " + std::to_string(frames) + " frames but object '" +
                                object.name + "' (" + object.origin + ") has " +
-                               std::to_string(object.files.size()));
+                               std::to_string(object.frame_count()));
         }
-        object.files.resize(frames);
+        if (object.cache) {
+            object.cache_frames = frames;
+        } else {
+            object.files.resize(frames);
+        }
     }
 
     std::string default_name() const {
@@ -162,18 +177,30 @@ std::uint32_t common_frame_count(const std::vector<FileObject>& objects) {
         if (object.is_static) continue;
         if (first == nullptr) {
             first = &object;
-        } else if (object.files.size() != first->files.size()) {
+        } else if (object.frame_count() != first->frame_count()) {
             throw InputError("objects '" + first->name + "' (" + first->origin + ": " +
-                             std::to_string(first->files.size()) + " frames) and '" + object.name +
-                             "' (" + object.origin + ": " + std::to_string(object.files.size()) +
+                             std::to_string(first->frame_count()) + " frames) and '" + object.name +
+                             "' (" + object.origin + ": " + std::to_string(object.frame_count()) +
                              " frames) have different frame counts");
         }
     }
     if (first == nullptr) return 1;
-    if (first->files.size() > std::numeric_limits<std::uint32_t>::max()) {
+    if (first->frame_count() > std::numeric_limits<std::uint32_t>::max()) {
         throw InputError(first->origin + ": too many frames");
     }
-    return static_cast<std::uint32_t>(first->files.size());
+    return static_cast<std::uint32_t>(first->frame_count());
+}
+
+// The time of each frame, from the first point cache among the objects (their frames are the
+// scene's frames); nothing when no object has one.
+void take_cache_times(const std::vector<FileObject>& objects, std::uint32_t frames, Scene& scene) {
+    for (const FileObject& object : objects) {
+        if (!object.cache) continue;
+        const PointCacheLayout& layout = object.cache->layout();
+        scene.frame_times.assign(layout.frame_times.begin(), layout.frame_times.begin() + frames);
+        scene.fps = layout.fps;
+        return;
+    }
 }
 
 std::string scene_name(const SceneInputs& inputs) {
@@ -199,6 +226,7 @@ Scene open_inputs(std::span<const std::string> inputs) {
     Scene scene;
     scene.name = scene_name(collected);
     scene.self_collision = collected.self_collision;
+    take_cache_times(collected.objects, frames, scene);
     scene.source = make_file_source(std::move(collected.objects), frames);
     return scene;
 }
