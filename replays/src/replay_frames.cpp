@@ -42,8 +42,21 @@ std::filesystem::path frame_file(const std::filesystem::path& dir, const char* p
     return dir / name;
 }
 
-// The clip, opened before any frame is rendered (a bad path fails at once): at the recording's
-// fps, or 30 when it does not say.
+// The clip's frame rate: the recording's `fps`; else, when it has frame times (a point cache
+// with times but no rate), one over the median step between them; else 30.
+double clip_fps(const recorder::Recording& recording) {
+    if (recording.fps() > 0) return recording.fps();
+    const std::vector<double> times = recording.frame_times();
+    std::vector<double> steps;
+    for (std::size_t k = 1; k < times.size(); ++k) {
+        if (times[k] > times[k - 1]) steps.push_back(times[k] - times[k - 1]);
+    }
+    if (steps.empty()) return 30.0;
+    std::nth_element(steps.begin(), steps.begin() + std::ptrdiff_t(steps.size() / 2), steps.end());
+    return std::clamp(1.0 / steps[steps.size() / 2], 1.0, 1000.0);
+}
+
+// The clip, opened before any frame is rendered (a bad path fails at once), at clip_fps.
 std::unique_ptr<OrderedVideo> open_ordered_video(const RecordingData& data, const ReplayOptions& options,
                                                  ReplaySummary& summary) {
     if (options.video.empty()) return nullptr;
@@ -51,7 +64,7 @@ std::unique_ptr<OrderedVideo> open_ordered_video(const RecordingData& data, cons
     settings.path = options.video;
     settings.width = options.width;
     settings.height = options.height;
-    settings.fps = data.recording().fps() > 0 ? data.recording().fps() : 30.0;
+    settings.fps = clip_fps(data.recording());
     summary.video = options.video;
     summary.video_fps = settings.fps;
     return std::make_unique<OrderedVideo>(open_video(settings));

@@ -201,5 +201,34 @@ TEST(CameraFocus, FramesTheCollisionsMuchLargerThanAuto) {
     if (!HasFailure()) std::filesystem::remove_all(dir);
 }
 
+// One frame's PNG bytes of `recording` with `extra` options.
+std::string frame_bytes(const std::filesystem::path& dir, const std::string& recording, const std::string& out,
+                        std::vector<std::string> extra) {
+    std::vector<std::string> args = {"replay", recording, "-o", out, "--size", "200x150", "--frames", "3", "--show", "meshes"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const testing::CliResult result = testing::run_cli(args, dir);
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    return testing::read_bytes(dir / out / "frame_0003.png");
+}
+
+TEST(CameraUp, TheRecordedUpAxisIsTheDefaultAndUpOverridesIt) {
+    const std::filesystem::path dir = testing::test_dir("up_" + std::to_string(::getpid()));
+    testing::record("demo:small", "aabb", dir / "plain.h5", {"--frames", "0:5"});
+    std::filesystem::copy_file(dir / "plain.h5", dir / "y_up.h5");
+    testing::set_time_attributes(dir / "y_up.h5", 30.0, 'y');
+    const std::string plain = frame_bytes(dir, "plain.h5", "a", {});
+    const std::string recorded_y = frame_bytes(dir, "y_up.h5", "b", {});
+    const std::string asked_y = frame_bytes(dir, "plain.h5", "c", {"--up", "y"});
+    const std::string overridden_z = frame_bytes(dir, "y_up.h5", "d", {"--up", "z"});
+    ASSERT_FALSE(plain.empty());
+    EXPECT_EQ(recorded_y, asked_y) << "the recording's up_axis y is --up y";
+    EXPECT_EQ(overridden_z, plain) << "--up z overrides the recording's y: as a recording without one";
+    EXPECT_NE(recorded_y, plain);
+    const testing::CliResult bad = testing::run_cli({"replay", "plain.h5", "-o", "e", "--up", "w"}, dir);
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_EQ(bad.err_lines().size(), 1u) << bad.err;
+    if (!HasFailure()) std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace collidescope

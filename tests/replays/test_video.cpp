@@ -7,6 +7,8 @@
 
 #include "support/cli_runner.hpp"
 
+#include "collidescope/recorder/reader.hpp"
+
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -118,6 +120,22 @@ TEST_F(Video, TheClipPlaysAtTheRecordingsFps) {
     EXPECT_EQ(video.frames, 4u);
 }
 
+TEST_F(Video, FrameTimesWithoutFpsGiveTheRateOfTheirMedianStep) {
+    const std::filesystem::path out = testing::test_dir("video_times");
+    std::filesystem::copy_file(s_dir / "run.h5", out / "timed.h5");
+    const std::uint64_t rows = recorder::Recording(out / "timed.h5").frames_complete();  // closed again
+    // Steps of 1/12 s but one of 0.3 s after row 2: the median ignores it.
+    std::vector<double> times;
+    for (std::uint64_t r = 0; r < rows; ++r) times.push_back(double(r) / 12.0 + (r >= 3 ? 0.3 : 0.0));
+    testing::add_frame_times(out / "timed.h5", times);
+    const testing::CliResult result =
+        run_cli({"replay", "timed.h5", "--video", "clip.mp4", "--size", "160x120", "--frames", "0:6"}, out);
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    const testing::DecodedVideo video = testing::decode_video(out / "clip.mp4");
+    ASSERT_TRUE(video.opened) << video.error;
+    EXPECT_NEAR(video.fps, 12.0, 1e-3);
+}
+
 TEST_F(Video, BadNamesAndUnwritablePlacesAreOneLineErrorsThatLeaveNoFile) {
     const std::filesystem::path out = testing::test_dir("video_errors");
     std::ofstream(out / "plain_file") << "not a directory";
@@ -131,6 +149,11 @@ TEST_F(Video, BadNamesAndUnwritablePlacesAreOneLineErrorsThatLeaveNoFile) {
         EXPECT_FALSE(std::filesystem::exists(out / name)) << name;
     }
     EXPECT_EQ(partial_files(out), 0u);
+    // With --diff: not supported, said so.
+    const testing::CliResult diff = run_cli(
+        {"replay", "--diff", (s_dir / "run.h5").string(), (s_dir / "run.h5").string(), "-o", "d", "--video", "x.mp4"}, out);
+    EXPECT_EQ(diff.exit_code, 2);
+    EXPECT_EQ(diff.err_lines().size(), 1u) << diff.err;
     // Neither -o nor --video: nothing to write.
     const testing::CliResult nothing = run_cli({"replay", (s_dir / "run.h5").string()}, out);
     EXPECT_EQ(nothing.exit_code, 2);
