@@ -40,7 +40,7 @@ public:
         configure(*m_encoder);
         if (m_clip.wants_global_header()) m_encoder->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
         AVDictionary* options = nullptr;
-        av_dict_set(&options, "preset", "veryfast", 0);  // docs/experiments/video-encoding.md
+        av_dict_set(&options, "preset", settings.h264_preset.c_str(), 0);
         av_dict_set(&options, "crf", "20", 0);           // text and thin edges stay sharp
         av_dict_set(&options, "profile", "high", 0);
         const int status = avcodec_open2(m_encoder.get(), codec, &options);

@@ -23,6 +23,9 @@ struct VideoSettings {
     int width = 0;               ///< of the frames fed in, pixels
     int height = 0;
     double fps = 30;             ///< frames per second of the clip (> 0)
+    /// x264's speed/size trade-off (its --preset) for .mp4; bench/bench_video_encode.cpp and
+    /// docs/experiments/video-encoding.md compare them.
+    std::string h264_preset = "veryfast";
 };
 
 /// Encodes RGBA frames into a clip. Not thread-safe: one caller at a time.
