@@ -1,4 +1,4 @@
-// `collidescope replay`: a recording -> annotated PNG frames (and a contact sheet), or two
+// `collidescope replay`: a recording -> annotated PNG frames, a contact sheet and/or a video clip, or two
 // recordings side by side with --diff (replays/, docs/replay.md).
 
 #include "commands.hpp"
@@ -158,7 +158,7 @@ int run_replay(const ReplayCliOptions& cli) {
 
 Command add_replay_command(CLI::App& app) {
     auto options = std::make_shared<ReplayCliOptions>();
-    CLI::App* replay = app.add_subcommand("replay", "Render a recording as annotated PNG frames, offscreen (or --diff two)");
+    CLI::App* replay = app.add_subcommand("replay", "Render a recording as annotated PNG frames and/or a video clip, offscreen (or --diff two)");
     replay->footer(k_footer);
     replay->add_option("recordings", options->recordings, "The recording (two with --diff)")
         ->required()
