@@ -102,6 +102,21 @@ double fit_corners(const Bounds& bounds, const Vec& center, const Vec& direction
     return needed * 1.04 + 1e-9;
 }
 
+// --camera focus: `camera` looks along `direction` (from the eye, reversed) at the focus
+// region's sphere, fitted to `fit` (the tangent of the narrower half field of view). The near
+// plane sits just in front of the region (what is nearer would hide the collisions), the far
+// plane behind the whole scene (`scene_center`, `scene_radius`).
+void frame_focus(Camera& camera, const Framing& focus, const Vec& direction, double fit, const Vec& scene_center,
+                 double scene_radius) {
+    const Vec d = normalized(direction);
+    const double distance = focus.radius / std::sin(std::atan(fit)) * 1.02;
+    camera.target = focus.center;
+    camera.eye = {focus.center[0] + d[0] * distance, focus.center[1] + d[1] * distance, focus.center[2] + d[2] * distance};
+    const double offset = std::sqrt(dot(sub(focus.center, scene_center), sub(focus.center, scene_center)));
+    camera.far_plane = distance + offset + 2 * scene_radius + 1e-6;
+    camera.near_plane = std::max(camera.far_plane * 1e-5, distance - 1.5 * focus.radius);
+}
+
 }  // namespace
 
 void Bounds::add(double x, double y, double z) {
@@ -185,20 +200,8 @@ Camera make_camera(const CameraSpec& spec, const Bounds& bounds, const Rect& vie
     // Distance at which the bounding sphere fits the narrower of the two fields of view.
     const double fit = std::min(std::tan(half_fov), std::tan(half_fov) * aspect);
     const double distance = radius / std::sin(std::atan(fit)) * 1.02;
-    const double scene_radius = radius;
-    const Vec scene_center = center;
     if (spec.kind == CameraSpec::Kind::Focus && focus != nullptr) {
-        // The focus region's sphere, in the Auto camera's direction.
-        const Vec direction = normalized(to_world(k_auto_direction, spec.up));
-        const double focus_distance = focus->radius / std::sin(std::atan(fit)) * 1.02;
-        camera.target = focus->center;
-        camera.eye = {focus->center[0] + direction[0] * focus_distance, focus->center[1] + direction[1] * focus_distance,
-                      focus->center[2] + direction[2] * focus_distance};
-        // Near plane just in front of the region (what is nearer would hide the collisions);
-        // far plane behind the whole scene.
-        const double offset = std::sqrt(dot(sub(focus->center, scene_center), sub(focus->center, scene_center)));
-        camera.far_plane = focus_distance + offset + 2 * scene_radius + 1e-6;
-        camera.near_plane = std::max(camera.far_plane * 1e-5, focus_distance - 1.5 * focus->radius);
+        frame_focus(camera, *focus, to_world(k_auto_direction, spec.up), fit, center, radius);
         return camera;
     }
     if (spec.kind == CameraSpec::Kind::Fixed) {
