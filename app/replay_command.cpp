@@ -3,6 +3,7 @@
 
 #include "commands.hpp"
 #include "frame_range.hpp"
+#include "interrupt.hpp"
 #include "progress.hpp"
 
 #include "collidescope/error.hpp"
@@ -14,6 +15,7 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <optional>
 
 namespace collidescope::app {
 namespace {
@@ -48,7 +50,8 @@ recording lacks is said on the image and on stderr. Same recording and options: 
 only one of them found in green. --video FILE.mp4|FILE.gif encodes the frames as one clip
 (H.264 MP4 or animated GIF, through FFmpeg's libraries), with or without -o DIR; a failed
 clip leaves no file. See docs/replay.md.
-Exit codes: 0 written (--diff: same pairs), 1 (--diff only) the pairs differ, 2 error.)";
+Exit codes: 0 written (--diff: same pairs), 1 (--diff only) the pairs differ, 2 error, 130 or
+143 stopped by SIGINT or SIGTERM (with --video: the clip is not written).)";
 
 void parse_image_size(const std::string& text, replays::ReplayOptions& options) {
     const std::size_t x = text.find('x');
@@ -124,9 +127,15 @@ int run_replay(const ReplayCliOptions& cli) {
     mallopt(M_MMAP_THRESHOLD, 256 << 20);
     mallopt(M_TRIM_THRESHOLD, 512 << 20);
     std::unique_ptr<Progress> bar;  // made at the first frame, when the number of frames is known
+    // With --video, SIGINT or SIGTERM stops the replay between frames; unwinding removes the
+    // unfinished clip (the PNGs written so far stay, each complete).
+    struct Interrupted {};
+    std::optional<InterruptGuard> interrupt;
+    if (!cli.video.empty()) interrupt.emplace();
     auto frame_done = [&](std::uint64_t total) {
         if (!bar) bar = std::make_unique<Progress>(total);
         bar->advance();
+        if (interrupt && interrupt->signal() != 0) throw Interrupted{};
     };
     if (cli.diff) {
         const replays::ReplaySummary summary = replays::replay_diff(cli.recordings[0], cli.recordings[1], options, frame_done);
@@ -138,7 +147,15 @@ int run_replay(const ReplayCliOptions& cli) {
         if (!cli.quiet) std::fprintf(stderr, "%s\n", rate_line(summary, options).c_str());
         return summary.only_in_a + summary.only_in_b == 0 ? 0 : 1;
     }
-    const replays::ReplaySummary summary = replays::replay(cli.recordings[0], options, frame_done);
+    replays::ReplaySummary summary;
+    try {
+        summary = replays::replay(cli.recordings[0], options, frame_done);
+    } catch (const Interrupted&) {
+        if (bar) bar->finish();
+        const int signal = interrupt->signal();
+        std::fprintf(stderr, "replay: interrupted by %s; %s not written\n", signal_name(signal).c_str(), cli.video.c_str());
+        return interrupted_exit_code(signal);
+    }
     if (bar) bar->finish();
     for (const std::string& note : summary.notes) std::fprintf(stderr, "replay: note: %s\n", note.c_str());
     if (!cli.quiet) std::fprintf(stderr, "%s\n", rate_line(summary, options).c_str());

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <unistd.h>
 
 #include <cstdio>
@@ -178,6 +179,21 @@ TEST_F(Video, AReplayThatFailsMidwayLeavesNoHalfWrittenClip) {
     EXPECT_NE(result.err.find("out of range"), std::string::npos) << result.err;
     EXPECT_FALSE(std::filesystem::exists(out / "clip.mp4"));
     EXPECT_EQ(partial_files(out), 0u);
+}
+
+TEST(VideoInterrupt, SigintStopsBetweenFramesAndRemovesTheUnfinishedClip) {
+    const std::filesystem::path out = testing::test_dir("video_sigint_" + std::to_string(::getpid()));
+    testing::record("demo", "aabb", out / "run.h5");  // 60 frames: several seconds at 1920x1080, one thread
+    testing::CliProcess replay({"replay", "run.h5", "--video", "clip.mp4", "--size", "1920x1080", "--threads", "1"}, out);
+    ASSERT_TRUE(replay.wait_until([&] { return std::filesystem::exists(out / ".clip.mp4.partial"); }, 60))
+        << replay.err();
+    replay.send(SIGINT);
+    const testing::CliResult result = replay.wait();
+    EXPECT_EQ(result.exit_code, 130) << result.err;
+    EXPECT_NE(result.err.find("interrupted by SIGINT; clip.mp4 not written"), std::string::npos) << result.err;
+    EXPECT_FALSE(std::filesystem::exists(out / "clip.mp4"));
+    EXPECT_EQ(partial_files(out), 0u);
+    if (!HasFailure()) std::filesystem::remove_all(out);
 }
 
 }  // namespace
