@@ -44,6 +44,11 @@ int run_compare(const CompareOptions& options) {
         std::printf("frames only in a: %llu, only in b: %llu\n", static_cast<unsigned long long>(report.frames_only_a),
                     static_cast<unsigned long long>(report.frames_only_b));
     }
+    if (report.time_differences > 0) {
+        std::printf("times: %llu matched frames were sampled at other times, the first frame %u (fps %g vs %g)\n",
+                    static_cast<unsigned long long>(report.time_differences), *report.first_time_difference, a.fps(),
+                    b.fps());
+    }
     if (report.differences.empty()) {
         std::printf("pairs: identical in every matched frame\n");
     } else {

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <string>
 
 namespace collidescope::app {
 namespace {
@@ -32,6 +33,25 @@ void print_counts(const char* title, const nlohmann::ordered_json& counts) {
     for (const auto& [name, frames] : counts.items()) std::cout << ' ' << name << " (" << frames << ")";
 }
 
+// "time: 0 s .. 2.5 s at 30 fps, clip 'Walk', up axis y": only what the file says; nothing
+// for a recording without time.
+void print_time(const nlohmann::ordered_json& info) {
+    std::string line;
+    char number[96];
+    if (!info["time_range_s"].is_null()) {
+        std::snprintf(number, sizeof number, "%g s .. %g s", info["time_range_s"][0].get<double>(),
+                      info["time_range_s"][1].get<double>());
+        line += number;
+    }
+    if (!info["fps"].is_null()) {
+        std::snprintf(number, sizeof number, "%g fps", info["fps"].get<double>());
+        line += (line.empty() ? "" : " at ") + std::string(number);
+    }
+    if (!info["clip"].is_null()) line += (line.empty() ? "" : ", ") + ("clip '" + info["clip"].get<std::string>() + "'");
+    if (!info["up_axis"].is_null()) line += (line.empty() ? "" : ", ") + ("up axis " + info["up_axis"].get<std::string>());
+    if (!line.empty()) std::cout << "time: " << line << '\n';
+}
+
 void print_text(const nlohmann::ordered_json& info) {
     const auto& meta = info["metadata"];
     const auto text = [&](const char* key) { return meta.contains(key) ? meta[key].get<std::string>() : std::string(); };
@@ -43,6 +63,7 @@ void print_text(const nlohmann::ordered_json& info) {
               << ", method " << text("method") << ", self-collision " << (text("self_collision") == "1" ? "on" : "off")
               << ", threads " << text("threads") << ", collidescope " << text("tool_version") << " (git "
               << text("git_revision") << ")\n";
+    print_time(info);
     std::cout << "objects: " << info["objects"].size() << '\n';
     for (std::size_t k = 0; k < info["objects"].size(); ++k) {
         const auto& object = info["objects"][k];

@@ -67,6 +67,16 @@ void add_decisions(const recorder::Recording& rec, nlohmann::ordered_json& out) 
 
 }  // namespace
 
+// Schema 1.4: what the inputs said about time and orientation; null where the file does not say.
+void add_time(const recorder::Recording& rec, nlohmann::ordered_json& out) {
+    out["fps"] = rec.fps() > 0 ? nlohmann::ordered_json(rec.fps()) : nlohmann::ordered_json();
+    out["clip"] = rec.clip().empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(rec.clip());
+    out["up_axis"] = rec.up_axis() == 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(std::string(1, rec.up_axis()));
+    const std::vector<double> times = rec.frame_times();
+    out["time_range_s"] = times.empty() ? nlohmann::ordered_json()
+                                        : nlohmann::ordered_json::array({times.front(), times.back()});
+}
+
 nlohmann::ordered_json inspect_info(const recorder::Recording& rec) {
     nlohmann::ordered_json out;
     out["file"] = rec.path();
@@ -82,6 +92,7 @@ nlohmann::ordered_json inspect_info(const recorder::Recording& rec) {
     const std::vector<std::uint32_t> indices = rec.frame_indices();
     out["first_frame"] = indices.empty() ? 0 : indices.front();
     out["last_frame"] = indices.empty() ? 0 : indices.back();
+    add_time(rec, out);
     nlohmann::ordered_json objects = nlohmann::ordered_json::array();
     for (const recorder::ObjectInfo& object : rec.objects()) {
         nlohmann::ordered_json topologies = nlohmann::ordered_json::array();

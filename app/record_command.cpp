@@ -81,6 +81,10 @@ recorder::SessionInfo session_info(const Scene& scene, const RecordOptions& opti
     info.tool_version = COLLIDESCOPE_VERSION;
     info.git_revision = COLLIDESCOPE_GIT_REVISION;
     for (std::uint32_t k = 0; k < scene.source->object_count(); ++k) info.object_names.push_back(scene.source->object_name(k));
+    info.frame_times = scene.frame_times;
+    info.fps = scene.fps;
+    info.clip = scene.clip;
+    info.up_axis = scene.up_axis;
     return info;
 }
 

@@ -1,8 +1,9 @@
-// `collidescope replay`: a recording -> annotated PNG frames (and a contact sheet), or two
+// `collidescope replay`: a recording -> annotated PNG frames, a contact sheet and/or a video clip, or two
 // recordings side by side with --diff (replays/, docs/replay.md).
 
 #include "commands.hpp"
 #include "frame_range.hpp"
+#include "interrupt.hpp"
 #include "progress.hpp"
 
 #include "collidescope/error.hpp"
@@ -14,16 +15,19 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <optional>
 
 namespace collidescope::app {
 namespace {
 
 struct ReplayCliOptions {
     std::vector<std::string> recordings;  ///< one, or two with --diff
-    std::string output;                   ///< -o DIR
+    std::string output;                   ///< -o DIR ("" = no PNGs; then --video is needed)
+    std::string video;                    ///< --video FILE.mp4|FILE.gif
     std::string frames;                   ///< "" = every recorded frame
     std::string size = "1280x720";
     std::string camera = "auto";
+    std::string up;                       ///< "" = the recording's up axis, else z
     std::string show = "all";
     int threads = 0;
     std::string gl = "auto";
@@ -43,8 +47,11 @@ matrix as a heat map) and a timeline of per-frame time coloured by mode. Layers 
 meshes, collisions, pcs, depth, overlay, timeline, legend (or all, none). Whatever the
 recording lacks is said on the image and on stderr. Same recording and options: same bytes.
 --diff A.h5 B.h5 writes DIR/diff_NNNN.png: the frames both hold, A left and B right, the pairs
-only one of them found in green. See docs/replay.md.
-Exit codes: 0 written (--diff: same pairs), 1 (--diff only) the pairs differ, 2 error.)";
+only one of them found in green. --video FILE.mp4|FILE.gif encodes the frames as one clip
+(H.264 MP4 or animated GIF, through FFmpeg's libraries), with or without -o DIR; a failed
+clip leaves no file. See docs/replay.md.
+Exit codes: 0 written (--diff: same pairs), 1 (--diff only) the pairs differ, 2 error, 130 or
+143 stopped by SIGINT or SIGTERM (with --video: the clip is not written).)";
 
 void parse_image_size(const std::string& text, replays::ReplayOptions& options) {
     const std::size_t x = text.find('x');
@@ -64,6 +71,8 @@ void parse_image_size(const std::string& text, replays::ReplayOptions& options) 
 replays::ReplayOptions replay_options(const ReplayCliOptions& cli) {
     replays::ReplayOptions options;
     options.output_dir = cli.output;
+    options.video = cli.video;
+    if (!cli.video.empty()) replays::check_video_path(cli.video);
     if (!cli.frames.empty()) {
         // Scene frame numbers; the recording says which of them it holds.
         const FrameRange range = parse_frame_range(cli.frames, std::numeric_limits<std::uint32_t>::max());
@@ -72,6 +81,7 @@ replays::ReplayOptions replay_options(const ReplayCliOptions& cli) {
     }
     parse_image_size(cli.size, options);
     options.camera = replays::parse_camera(cli.camera);
+    if (!cli.up.empty()) options.camera.up = replays::parse_up_axis(cli.up);
     options.layers = replays::parse_layers(cli.show);
     if (cli.threads < 0) throw InputError("--threads must be 0 (all hardware threads) or more");
     options.threads = cli.threads;
@@ -94,6 +104,9 @@ std::string rate_line(const replays::ReplaySummary& summary, const replays::Repl
     if (summary.draw_seconds <= 0) return text;  // --diff does not time its steps
     std::snprintf(line, sizeof line, "; thread seconds: read %.2f, draw %.2f, read back %.2f, png %.2f",
                   summary.read_seconds, summary.draw_seconds, summary.readback_seconds, summary.png_seconds);
+    text += line;
+    if (summary.video.empty()) return text;
+    std::snprintf(line, sizeof line, ", video %.2f", summary.video_seconds);
     return text + line;
 }
 
@@ -102,6 +115,10 @@ int run_replay(const ReplayCliOptions& cli) {
         throw InputError(cli.diff ? "--diff needs two recordings: replay --diff A.h5 B.h5 -o DIR"
                                   : "replay takes one recording (two with --diff)");
     }
+    if (cli.output.empty() && (cli.diff || cli.video.empty())) {
+        throw InputError(cli.diff ? "replay --diff needs -o DIR" : "replay needs -o DIR (PNG frames), --video FILE, or both");
+    }
+    if (cli.diff && !cli.video.empty()) throw InputError("--video does not go with --diff (use -o DIR)");
     const replays::ReplayOptions options = replay_options(cli);
     // Every frame allocates a few image-sized buffers (3.7 MB at 1280x720: read back, PNG
     // filter rows, deflate output). Above glibc's mmap threshold each is mapped and unmapped
@@ -110,9 +127,15 @@ int run_replay(const ReplayCliOptions& cli) {
     mallopt(M_MMAP_THRESHOLD, 256 << 20);
     mallopt(M_TRIM_THRESHOLD, 512 << 20);
     std::unique_ptr<Progress> bar;  // made at the first frame, when the number of frames is known
+    // With --video, SIGINT or SIGTERM stops the replay between frames; unwinding removes the
+    // unfinished clip (the PNGs written so far stay, each complete).
+    struct Interrupted {};
+    std::optional<InterruptGuard> interrupt;
+    if (!cli.video.empty()) interrupt.emplace();
     auto frame_done = [&](std::uint64_t total) {
         if (!bar) bar = std::make_unique<Progress>(total);
         bar->advance();
+        if (interrupt && interrupt->signal() != 0) throw Interrupted{};
     };
     if (cli.diff) {
         const replays::ReplaySummary summary = replays::replay_diff(cli.recordings[0], cli.recordings[1], options, frame_done);
@@ -124,12 +147,26 @@ int run_replay(const ReplayCliOptions& cli) {
         if (!cli.quiet) std::fprintf(stderr, "%s\n", rate_line(summary, options).c_str());
         return summary.only_in_a + summary.only_in_b == 0 ? 0 : 1;
     }
-    const replays::ReplaySummary summary = replays::replay(cli.recordings[0], options, frame_done);
+    replays::ReplaySummary summary;
+    try {
+        summary = replays::replay(cli.recordings[0], options, frame_done);
+    } catch (const Interrupted&) {
+        if (bar) bar->finish();
+        const int signal = interrupt->signal();
+        std::fprintf(stderr, "replay: interrupted by %s; %s not written\n", signal_name(signal).c_str(), cli.video.c_str());
+        return interrupted_exit_code(signal);
+    }
     if (bar) bar->finish();
     for (const std::string& note : summary.notes) std::fprintf(stderr, "replay: note: %s\n", note.c_str());
     if (!cli.quiet) std::fprintf(stderr, "%s\n", rate_line(summary, options).c_str());
-    std::printf("wrote %llu frames to %s (%s .. %s)\n", static_cast<unsigned long long>(summary.frames),
-                cli.output.c_str(), summary.files.front().filename().c_str(), summary.files.back().filename().c_str());
+    if (!summary.files.empty()) {
+        std::printf("wrote %llu frames to %s (%s .. %s)\n", static_cast<unsigned long long>(summary.frames),
+                    cli.output.c_str(), summary.files.front().filename().c_str(), summary.files.back().filename().c_str());
+    }
+    if (!summary.video.empty()) {
+        std::printf("video: %s (%llu frames at %g fps, %.2f s of encoding)\n", summary.video.c_str(),
+                    static_cast<unsigned long long>(summary.frames), summary.video_fps, summary.video_seconds);
+    }
     if (!summary.contact_sheet.empty()) std::printf("contact sheet: %s\n", summary.contact_sheet.c_str());
     return 0;
 }
@@ -138,19 +175,26 @@ int run_replay(const ReplayCliOptions& cli) {
 
 Command add_replay_command(CLI::App& app) {
     auto options = std::make_shared<ReplayCliOptions>();
-    CLI::App* replay = app.add_subcommand("replay", "Render a recording as annotated PNG frames, offscreen (or --diff two)");
+    CLI::App* replay = app.add_subcommand("replay", "Render a recording as annotated PNG frames and/or a video clip, offscreen (or --diff two)");
     replay->footer(k_footer);
     replay->add_option("recordings", options->recordings, "The recording (two with --diff)")
         ->required()
         ->type_name("RECORDING.h5");
-    replay->add_option("-o,--output", options->output, "Directory for the PNGs (created when missing)")
-        ->required()
+    replay->add_option("-o,--output", options->output,
+                       "Directory for the PNGs (created when missing); optional with --video")
         ->type_name("DIR");
+    replay->add_option("--video", options->video,
+                       "Also encode the frames as a clip: FILE.mp4 (H.264) or FILE.gif, at the recording's fps (30 "
+                       "when it has none)")
+        ->type_name("FILE");
     replay->add_option("--frames", options->frames, "Scene frames to replay: A:B (half-open), A:, :B or N")
         ->type_name("A:B");
     replay->add_option("--size", options->size, "Image size in pixels")->type_name("WxH")->capture_default_str();
-    replay->add_option("--camera", options->camera, "auto, orbit[:DEG_PER_FRAME] or fixed:EX,EY,EZ[:TX,TY,TZ]")
+    replay->add_option("--camera", options->camera,
+                       "auto, orbit[:DEG_PER_FRAME], focus (follows the collisions) or fixed:EX,EY,EZ[:TX,TY,TZ]")
         ->capture_default_str();
+    replay->add_option("--up", options->up, "The axis that points up on screen: x, y or z (default: the recording's, else z)")
+        ->type_name("x|y|z");
     replay->add_option("--show", options->show, "Layers: meshes,collisions,pcs,depth,overlay,timeline,legend | all | none")
         ->type_name("LIST")
         ->capture_default_str();

@@ -22,6 +22,9 @@ PACKAGES=(
   libosmesa6-dev libegl-dev libopengl-dev libimgui-dev libstb-dev fonts-dejavu-core
   # the EGL backend (--gl egl): Mesa's EGL vendor and its llvmpipe driver (no GPU needed)
   libegl-mesa0 libgl1-mesa-dri
+  # replay --video: FFmpeg's libraries (libavcodec59 brings libx264 for H.264; libavfilter's
+  # palettegen/paletteuse make the GIF palette), found through pkg-config
+  libavcodec-dev libavformat-dev libswscale-dev libavfilter-dev libavutil-dev
   # data: the Stanford bunny (/usr/share/glmark2/models/bunny.obj); real models of every
   # format assimp reads (/usr/share/assimp/models: the Corpus.AssimpTestmodels tests)
   glmark2-data assimp-testmodels

@@ -72,6 +72,30 @@ class Recording:
         return self._frames.copy()
 
     @property
+    def times(self):
+        """Seconds from the clip's start of every complete frame (/frames/time, schema 1.4; a
+        float64 array), or None when the recording's inputs carried no time."""
+        if "frames/time" not in self._file:
+            return None
+        return self._file["frames/time"][: len(self)].astype(np.float64)
+
+    @property
+    def fps(self):
+        """The source animation's frames per second (attribute `fps`), or None when unknown."""
+        value = self._file.attrs.get("fps")
+        return float(value) if value is not None else None
+
+    @property
+    def clip(self):
+        """The source animation clip's name (attribute `clip`), or None."""
+        return attr_text(self._file, "clip")
+
+    @property
+    def up_axis(self):
+        """The axis the inputs call up, "x", "y" or "z" (attribute `up_axis`), or None."""
+        return attr_text(self._file, "up_axis")
+
+    @property
     def attrs(self):
         """The root attributes (docs/recording.md), strings as str."""
         return {name: attr_text(self._file, name) for name in self._file.attrs}
@@ -149,7 +173,7 @@ class Recording:
     @property
     def stats(self):
         """Per-frame stats as numpy arrays, one entry per complete frame: "frame" (scene frame
-        numbers), "method" (names), "mode" (1 or 2 where the decision system ran, 0 elsewhere),
+        numbers), "time" (seconds, or None without /frames/time), "method" (names), "mode" (1 or 2 where the decision system ran, 0 elsewhere),
         "ms" and "counts" (dicts: the names of `check --stats`), and "gpu", "aabb", "decision",
         "hybrid" (dicts of float64 arrays, NaN on frames whose method did not fill them) where
         the file has them."""
@@ -169,7 +193,7 @@ class Recording:
     def _counted_datasets(self):
         """Every dataset whose length bounds the complete frames (docs/recording.md)."""
         f = self._file
-        names = ["frames/index", "frames/method"]
+        names = ["frames/index", "frames/method"] + (["frames/time"] if "frames/time" in f else [])
         for group in ("frames/ms", "frames/counts") + tuple("frames/" + g for g in METHOD_GROUPS):
             if group in f:
                 names += [group + "/" + member for member in f[group]]
@@ -213,6 +237,7 @@ class Recording:
         names = {code: name for name, code in codes.items()}
         stats = {
             "frame": self._frames.copy(),
+            "time": self.times,
             "method": np.array([names[int(c)] for c in f["frames/method"][:n]], dtype=str),
             "ms": {stage: f["frames/ms/" + stage][:n] for stage in f["frames/ms"]},
             "counts": {count: f["frames/counts/" + count][:n] for count in f["frames/counts"]},

@@ -60,6 +60,20 @@ std::vector<StageComparison> compare_stages(const Recording& a, const Recording&
     return out;
 }
 
+void compare_times(const Recording& a, const Recording& b,
+                   const std::vector<std::pair<std::uint64_t, std::uint64_t>>& matched,
+                   const std::vector<std::uint32_t>& frames_a, ComparisonReport& report) {
+    report.both_timed = a.has_frame_times() && b.has_frame_times();
+    if (!report.both_timed) return;
+    const std::vector<double> times_a = a.frame_times();
+    const std::vector<double> times_b = b.frame_times();
+    for (const auto& [ra, rb] : matched) {
+        if (times_a[ra] == times_b[rb]) continue;
+        if (!report.first_time_difference) report.first_time_difference = frames_a[ra];
+        ++report.time_differences;
+    }
+}
+
 }  // namespace
 
 ComparisonReport compare_recordings(const Recording& a, const Recording& b) {
@@ -77,6 +91,7 @@ ComparisonReport compare_recordings(const Recording& a, const Recording& b) {
         report.differences.push_back({frames_a[ra], count_difference(pairs_a, pairs_b), count_difference(pairs_b, pairs_a)});
     }
     report.stages = compare_stages(a, b, matched);
+    compare_times(a, b, matched, frames_a, report);
     return report;
 }
 

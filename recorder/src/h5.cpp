@@ -155,6 +155,13 @@ void write_attr(const Where& where, hid_t obj, const std::string& name, std::int
     where.check(H5Awrite(attr.get(), H5T_NATIVE_INT64, &value), "cannot write attribute " + name);
 }
 
+void write_attr(const Where& where, hid_t obj, const std::string& name, double value) {
+    const Id space = where.own(H5Screate(H5S_SCALAR), H5Sclose, "cannot make a dataspace");
+    const Id attr = where.own(H5Acreate2(obj, name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                              H5Aclose, "cannot create attribute " + name);
+    where.check(H5Awrite(attr.get(), H5T_NATIVE_DOUBLE, &value), "cannot write attribute " + name);
+}
+
 bool has_attr(hid_t obj, const std::string& name) { return H5Aexists(obj, name.c_str()) > 0; }
 
 std::optional<std::string> read_string_attr(const Where& where, hid_t obj, const std::string& name) {
@@ -296,6 +303,20 @@ void read_rows(const Where& where, hid_t dataset, const std::string& path, hid_t
     const Id mem_space = where.own(H5Screate_simple(rank, count, nullptr), H5Sclose, "cannot make a dataspace");
     where.check(H5Dread(dataset, mem_type, mem_space.get(), file_space.get(), H5P_DEFAULT, out),
                 "cannot read " + path + " (corrupt or truncated file?)");
+}
+
+std::optional<double> read_double_attr(const Where& where, hid_t obj, const std::string& name) {
+    if (!has_attr(obj, name)) return std::nullopt;
+    const Id attr = where.own(H5Aopen(obj, name.c_str(), H5P_DEFAULT), H5Aclose, "cannot open attribute " + name);
+    const Id type = where.own(H5Aget_type(attr.get()), H5Tclose, "cannot read attribute " + name);
+    const Id space = where.own(H5Aget_space(attr.get()), H5Sclose, "cannot read attribute " + name);
+    const H5T_class_t type_class = H5Tget_class(type.get());
+    if ((type_class != H5T_FLOAT && type_class != H5T_INTEGER) || H5Sget_simple_extent_npoints(space.get()) != 1) {
+        where.fail("attribute " + name + " is not a numeric scalar");
+    }
+    double value = 0;
+    where.check(H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &value), "cannot read attribute " + name);
+    return value;
 }
 
 }  // namespace collidescope::recorder::h5

@@ -76,11 +76,14 @@ std::vector<std::string> member_names(const Where& where, hid_t group, const std
 // numbers scalar.
 void write_attr(const Where& where, hid_t obj, const std::string& name, const std::string& value);
 void write_attr(const Where& where, hid_t obj, const std::string& name, std::int64_t value);
+void write_attr(const Where& where, hid_t obj, const std::string& name, double value);
 bool has_attr(hid_t obj, const std::string& name);
 /// Reads a string attribute (variable or fixed length); nullopt when absent.
 std::optional<std::string> read_string_attr(const Where& where, hid_t obj, const std::string& name);
 /// Reads an integer attribute converted to int64; nullopt when absent.
 std::optional<std::int64_t> read_int_attr(const Where& where, hid_t obj, const std::string& name);
+/// Reads a numeric (float or integer) scalar attribute as double; nullopt when absent.
+std::optional<double> read_double_attr(const Where& where, hid_t obj, const std::string& name);
 
 /// Layout of an extensible dataset: `width` columns (1 = a 1-D dataset), rows growing.
 struct ExtensibleSpec {

@@ -7,6 +7,7 @@
 #include "collidescope/recorder/schema.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace collidescope::recorder {
@@ -63,11 +64,26 @@ void Recording::Impl::check_schema() {
     const std::int64_t begin = h5::read_int_attr(where, file.get(), "frame_begin").value_or(0);
     const std::int64_t end = h5::read_int_attr(where, file.get(), "frame_end").value_or(0);
     frames_requested = end > begin ? static_cast<std::uint64_t>(end - begin) : 0;
+    read_time_attributes();
+}
+
+void Recording::Impl::read_time_attributes() {
+    fps = h5::read_double_attr(where, file.get(), schema::k_attr_fps).value_or(0);
+    if (!(fps >= 0) || !std::isfinite(fps)) {
+        where.fail("attribute " + std::string(schema::k_attr_fps) + " is not a positive number");
+    }
+    clip = h5::read_string_attr(where, file.get(), schema::k_attr_clip).value_or("");
+    const std::string up = h5::read_string_attr(where, file.get(), schema::k_attr_up_axis).value_or("");
+    if (!up.empty() && (up.size() != 1 || (up != "x" && up != "y" && up != "z"))) {
+        where.fail("attribute " + std::string(schema::k_attr_up_axis) + " is '" + up + "', not x, y or z");
+    }
+    up_axis = up.empty() ? 0 : up[0];
 }
 
 void Recording::Impl::count_frames() {
     std::uint64_t n = rows(schema::k_frame_index);
     n = std::min(n, rows(schema::k_frame_method));
+    if (h5::exists(file.get(), schema::k_frame_time)) n = std::min(n, rows(schema::k_frame_time));
     for (const char* group : {schema::k_frame_ms, schema::k_frame_counts}) {
         for (const std::string& member : group_members(group)) n = std::min(n, rows(std::string(group) + "/" + member));
     }
@@ -155,6 +171,17 @@ const std::vector<ObjectInfo>& Recording::objects() const { return m_impl->objec
 std::vector<std::uint32_t> Recording::frame_indices() const {
     return m_impl->read_all<std::uint32_t>(schema::k_frame_index, H5T_NATIVE_UINT32, m_impl->frames);
 }
+
+bool Recording::has_frame_times() const { return h5::exists(m_impl->file.get(), schema::k_frame_time); }
+
+std::vector<double> Recording::frame_times() const {
+    if (!has_frame_times()) return {};
+    return m_impl->read_all<double>(schema::k_frame_time, H5T_NATIVE_DOUBLE, m_impl->frames);
+}
+
+double Recording::fps() const { return m_impl->fps; }
+const std::string& Recording::clip() const { return m_impl->clip; }
+char Recording::up_axis() const { return m_impl->up_axis; }
 
 std::vector<std::uint64_t> Recording::read_u64(const std::string& dataset) const {
     return m_impl->read_all<std::uint64_t>(dataset, H5T_NATIVE_UINT64, std::numeric_limits<std::uint64_t>::max());

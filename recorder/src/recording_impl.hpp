@@ -22,6 +22,9 @@ struct Recording::Impl {
     bool finished = false;
     std::string interrupted;            ///< attribute `interrupted` ("" when absent)
     std::uint64_t frames_requested = 0; ///< frame_end - frame_begin (0 when absent)
+    double fps = 0;                     ///< attribute `fps` (1.4; 0 when absent)
+    std::string clip;                   ///< attribute `clip` (1.4; "" when absent)
+    char up_axis = 0;                   ///< attribute `up_axis` (1.4; 0 when absent)
     std::uint64_t frames = 0;
     std::vector<ObjectInfo> objects;
 
@@ -45,6 +48,7 @@ struct Recording::Impl {
 
     void open_file();
     void check_schema();
+    void read_time_attributes();
     void count_frames();
     void read_objects();
     /// Fails unless `row` is a complete frame.

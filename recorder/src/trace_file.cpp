@@ -55,7 +55,8 @@ TraceFile::TraceFile(const std::filesystem::path& path, const SessionInfo& sessi
                      std::span<const std::string> methods, int deflate_level)
     : m_where(path.string()),
       m_deflate(deflate_level),
-      m_depth_chunk(session.depth_image_pixels > 0 ? chunk_rows(session.depth_image_pixels) : 65536) {
+      m_depth_chunk(session.depth_image_pixels > 0 ? chunk_rows(session.depth_image_pixels) : 65536),
+      m_frame_times(session.frame_times) {
     h5::silence();
     const h5::Id fapl = m_where.own(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create a property list");
     // SWMR needs the latest file format.
@@ -101,11 +102,18 @@ void TraceFile::write_metadata(const SessionInfo& session) {
     h5::write_attr(m_where, root, "depth", session.depth);
     h5::write_attr(m_where, root, "gl_renderer", session.gl_renderer);
     h5::write_attr(m_where, root, "object_count", static_cast<std::int64_t>(session.object_names.size()));
+    // Schema 1.4: only what the inputs say, so an untimed scene's file has none of them.
+    if (session.fps > 0) h5::write_attr(m_where, root, schema::k_attr_fps, session.fps);
+    if (!session.clip.empty()) h5::write_attr(m_where, root, schema::k_attr_clip, session.clip);
+    if (session.up_axis != 0) h5::write_attr(m_where, root, schema::k_attr_up_axis, std::string(1, session.up_axis));
 }
 
 void TraceFile::create_frames(std::span<const std::string> methods) {
     h5::create_group(m_where, m_file.get(), schema::k_frames);
     m_index = make_column(schema::k_frame_index, {H5T_STD_U32LE, 1, k_frame_chunk, 0, schema::k_unit_none});
+    if (!m_frame_times.empty()) {
+        m_time = make_column(schema::k_frame_time, {H5T_IEEE_F64LE, 1, k_frame_chunk, 0, schema::k_unit_seconds});
+    }
     m_method_type = m_where.own(H5Tenum_create(H5T_NATIVE_UINT8), H5Tclose, "cannot create the method enum");
     for (std::size_t code = 0; code < methods.size(); ++code) {
         const auto value = static_cast<std::uint8_t>(code);
@@ -298,6 +306,15 @@ void TraceFile::write_frames(std::span<const FrameRecord> records, std::span<con
     append_per_frame<std::uint8_t>(m_method, m_method_type.get(), records,
                                    [](const FrameRecord& record) { return record.method; });
     append_details(records, keeps);
+    if (!m_frame_times.empty()) {
+        append_per_frame<double>(m_time, H5T_NATIVE_DOUBLE, records, [&](const FrameRecord& record) {
+            if (record.frame >= m_frame_times.size()) {
+                m_where.fail("frame " + std::to_string(record.frame) + " has no time (the scene gave " +
+                             std::to_string(m_frame_times.size()) + ")");
+            }
+            return m_frame_times[record.frame];
+        });
+    }
     // The frame index last: a reader counts a frame complete when every dataset has its row.
     append_per_frame<std::uint32_t>(m_index, H5T_NATIVE_UINT32, records,
                                     [](const FrameRecord& record) { return record.frame; });
@@ -318,6 +335,7 @@ std::uint64_t TraceFile::positions_bytes() const {
 
 void TraceFile::close() {
     m_index.dataset.reset();
+    m_time.dataset.reset();
     m_method.dataset.reset();
     m_pairs.dataset.reset();
     m_pair_offsets.dataset.reset();

@@ -111,6 +111,7 @@ private:
     h5::Id m_file;
     h5::Id m_method_type;  ///< the enum of method names
     Column m_index, m_method, m_pairs, m_pair_offsets;
+    Column m_time;                      ///< /frames/time (1.4), only with m_frame_times
     std::vector<Column> m_ms, m_counts;
     DetailGroup m_gpu, m_aabb, m_decision, m_hybrid;  ///< schema 1.1 (gpu, aabb) and 1.2 details
     Column m_gpu_passes, m_gpu_pass_offsets;
@@ -124,6 +125,7 @@ private:
     bool m_damaged = false;
     std::uint64_t m_frames_written = 0;
     hsize_t m_depth_chunk;  ///< pixels per chunk of /gpu/depth/pixels: one image
+    std::vector<double> m_frame_times;  ///< seconds per scene frame (SessionInfo::frame_times)
 };
 
 }  // namespace collidescope::recorder

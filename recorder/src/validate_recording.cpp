@@ -22,6 +22,7 @@ public:
         check_units_and_lengths();
         check_frame_indices();
         check_methods_and_times();
+        check_frame_times();
         check_objects();
         check_pairs();
         return std::move(m_report);
@@ -39,6 +40,7 @@ private:
     void check_units_and_lengths();
     void check_frame_indices();
     void check_methods_and_times();
+    void check_frame_times();
     void check_objects();
     void check_object(std::uint32_t k);
     void check_pairs();
@@ -89,6 +91,24 @@ void Checker::check_methods_and_times() {
                 problem(std::string(schema::k_frame_ms) + "/" + series.name + ": " + frame_name(r, m_indices) +
                         " has " + std::to_string(series.values[r]) + " ms");
             }
+        }
+    }
+}
+
+// Schema 1.4: /frames/time, when present, is in seconds, finite and never decreasing.
+void Checker::check_frame_times() {
+    if (!m_rec.has_frame_times()) return;
+    const std::string path = schema::k_frame_time;
+    if (m_rec.unit_of(path) != schema::k_unit_seconds) {
+        problem(path + ": unit '" + m_rec.unit_of(path) + "', not '" + schema::k_unit_seconds + "'");
+    }
+    const std::vector<double> times = m_rec.frame_times();
+    for (std::uint64_t r = 0; r < times.size(); ++r) {
+        if (!std::isfinite(times[r])) {
+            problem(path + ": " + frame_name(r, m_indices) + " has " + std::to_string(times[r]) + " s");
+        } else if (r > 0 && times[r] < times[r - 1]) {
+            problem(path + ": " + frame_name(r, m_indices) + " (" + std::to_string(times[r]) +
+                    " s) is earlier than the frame before it (" + std::to_string(times[r - 1]) + " s)");
         }
     }
 }

@@ -36,9 +36,15 @@ Mat multiply(const Mat& a, const Mat& b) {
     return c;
 }
 
+// An axis not parallel to `direction`, for a look-at whose up would be.
+Vec up_not_along(const Vec& direction, const Vec& up) {
+    if (std::abs(dot(normalized(direction), normalized(up))) <= 0.999) return up;
+    return std::abs(direction[1]) < 0.9 ? Vec{0, 1, 0} : Vec{1, 0, 0};
+}
+
 Mat look_at(const Vec& eye, const Vec& target, Vec up) {
     const Vec f = normalized(sub(target, eye));
-    if (std::abs(dot(f, normalized(up))) > 0.999) up = {0, 1, 0};  // looking straight down z
+    up = up_not_along(f, up);  // looking straight along the up axis
     const Vec s = normalized(cross(f, up));
     const Vec u = cross(s, f);
     return {s[0], u[0], -f[0], 0, s[1], u[1], -f[1], 0, s[2], u[2], -f[2], 0,
@@ -62,15 +68,26 @@ Mat view_projection_of(const Camera& camera) {
                     look_at(camera.eye, camera.target, camera.up));
 }
 
-// The direction the automatic camera looks from: above, in front and to the right, so
-// sheets in the xy plane and objects side by side along x both show.
+// The direction the automatic camera looks from, in a z-up frame: above, in front and to the
+// right, so sheets in the xy plane and objects side by side along x both show.
 constexpr Vec k_auto_direction = {0.55, -0.75, 0.45};
+
+// A z-up direction in a world whose up axis is `up`, by a proper rotation that takes z to the
+// up axis: y up (glTF): x stays, the z-up frame's front (-y) becomes +z, so the camera looks
+// from +z as glTF's viewers do; x up: the axes turn cyclically (x, y, z) -> (y, z, x).
+Vec to_world(const Vec& v, char up) {
+    if (up == 'y') return {v[0], v[2], -v[1]};
+    if (up == 'x') return {v[2], v[0], v[1]};
+    return v;
+}
+
+Vec up_vector(char up) { return to_world({0, 0, 1}, up); }
 
 // The distance along `direction` from `center` at which every corner of `bounds` lies inside
 // the field of view (tan_half_fov vertically, times aspect horizontally), with a small margin.
-double fit_corners(const Bounds& bounds, const Vec& center, const Vec& direction, double tan_half_fov, double aspect) {
-    Vec up = {0, 0, 1};
-    if (std::abs(dot(direction, up)) > 0.999) up = {0, 1, 0};
+double fit_corners(const Bounds& bounds, const Vec& center, const Vec& direction, const Vec& world_up,
+                   double tan_half_fov, double aspect) {
+    const Vec up = up_not_along(direction, world_up);
     const Vec s = normalized(cross(Vec{-direction[0], -direction[1], -direction[2]}, up));
     const Vec u = cross(s, Vec{-direction[0], -direction[1], -direction[2]});
     double needed = 0;
@@ -85,13 +102,30 @@ double fit_corners(const Bounds& bounds, const Vec& center, const Vec& direction
     return needed * 1.04 + 1e-9;
 }
 
+// --camera focus: `camera` looks along `direction` (from the eye, reversed) at the focus
+// region's sphere, fitted to `fit` (the tangent of the narrower half field of view). The near
+// plane sits just in front of the region (what is nearer would hide the collisions), the far
+// plane behind the whole scene (`scene_center`, `scene_radius`).
+void frame_focus(Camera& camera, const Framing& focus, const Vec& direction, double fit, const Vec& scene_center,
+                 double scene_radius) {
+    const Vec d = normalized(direction);
+    const double distance = focus.radius / std::sin(std::atan(fit)) * 1.02;
+    camera.target = focus.center;
+    camera.eye = {focus.center[0] + d[0] * distance, focus.center[1] + d[1] * distance, focus.center[2] + d[2] * distance};
+    const double offset = std::sqrt(dot(sub(focus.center, scene_center), sub(focus.center, scene_center)));
+    camera.far_plane = distance + offset + 2 * scene_radius + 1e-6;
+    camera.near_plane = std::max(camera.far_plane * 1e-5, distance - 1.5 * focus.radius);
+}
+
 }  // namespace
 
 void Bounds::add(double x, double y, double z) {
     const Vec p = {x, y, z};
+    // Whether it was empty before this point: empty() looks at x alone, which the loop sets first.
+    const bool was_empty = empty();
     for (int i = 0; i < 3; ++i) {
-        min[i] = empty() ? p[i] : std::min(min[i], p[i]);
-        max[i] = empty() ? p[i] : std::max(max[i], p[i]);
+        min[i] = was_empty ? p[i] : std::min(min[i], p[i]);
+        max[i] = was_empty ? p[i] : std::max(max[i], p[i]);
     }
 }
 
@@ -149,10 +183,11 @@ std::array<double, 3> Camera::project(double x, double y, double z) const {
 }
 
 Camera make_camera(const CameraSpec& spec, const Bounds& bounds, const Rect& viewport, std::uint64_t ordinal,
-                   std::uint64_t frames) {
+                   std::uint64_t frames, const Framing* focus) {
     Camera camera;
     camera.viewport = viewport;
     camera.fov_degrees = spec.fov_degrees;
+    camera.up = up_vector(spec.up);
     Vec center = {0, 0, 0};
     double radius = 1;
     if (!bounds.empty()) {
@@ -165,22 +200,28 @@ Camera make_camera(const CameraSpec& spec, const Bounds& bounds, const Rect& vie
     // Distance at which the bounding sphere fits the narrower of the two fields of view.
     const double fit = std::min(std::tan(half_fov), std::tan(half_fov) * aspect);
     const double distance = radius / std::sin(std::atan(fit)) * 1.02;
+    if (spec.kind == CameraSpec::Kind::Focus && focus != nullptr) {
+        frame_focus(camera, *focus, to_world(k_auto_direction, spec.up), fit, center, radius);
+        return camera;
+    }
     if (spec.kind == CameraSpec::Kind::Fixed) {
         camera.eye = spec.eye;
         camera.target = spec.target_given ? spec.target : center;
     } else {
         Vec direction = normalized(k_auto_direction);
-        double eye_distance = distance;
-        if (spec.kind == CameraSpec::Kind::Auto && !bounds.empty()) {
-            // A fixed direction: fit the box's eight corners rather than its sphere (closer).
-            eye_distance = fit_corners(bounds, center, direction, std::tan(half_fov), aspect);
-        }
         if (spec.kind == CameraSpec::Kind::Orbit) {
+            // About the up axis: z in the z-up frame, mapped with the rest.
             const double step = spec.degrees_per_frame != 0 ? spec.degrees_per_frame
                                                             : 360.0 / double(std::max<std::uint64_t>(frames, 1));
             const double angle = step * double(ordinal) * std::numbers::pi / 180.0;
             direction = {direction[0] * std::cos(angle) - direction[1] * std::sin(angle),
                          direction[0] * std::sin(angle) + direction[1] * std::cos(angle), direction[2]};
+        }
+        direction = to_world(direction, spec.up);
+        double eye_distance = distance;
+        if (spec.kind != CameraSpec::Kind::Orbit && !bounds.empty()) {
+            // A fixed direction: fit the box's eight corners rather than its sphere (closer).
+            eye_distance = fit_corners(bounds, center, direction, camera.up, std::tan(half_fov), aspect);
         }
         camera.target = center;
         camera.eye = {center[0] + direction[0] * eye_distance, center[1] + direction[1] * eye_distance,

@@ -133,6 +133,8 @@ ReplaySummary replay_diff(const std::filesystem::path& a, const std::filesystem:
     }
     Bounds bounds = data_a.bounds(just_a);
     bounds.add(data_b.bounds(just_b));
+    // A's up axis; --camera focus frames the whole scene here (each side's collisions differ).
+    const CameraSpec camera = resolved_camera(options.camera, data_a);
     const DiffLayout layout = diff_layout(options.width, options.height);
     const unsigned layers = k_layer_meshes | k_layer_collisions;
 
@@ -153,8 +155,8 @@ ReplaySummary replay_diff(const std::filesystem::path& a, const std::filesystem:
         const std::uint64_t only_a = mark_difference(frame_a, frame_b);
         const std::uint64_t only_b = mark_difference(frame_b, frame_a);
         thread.renderer->clear();
-        thread.renderer->draw(frame_a, make_camera(options.camera, bounds, layout.left, i, rows.size()), layers, 0);
-        thread.renderer->draw(frame_b, make_camera(options.camera, bounds, layout.right, i, rows.size()), layers, 1);
+        thread.renderer->draw(frame_a, make_camera(camera, bounds, layout.left, i, rows.size()), layers, 0);
+        thread.renderer->draw(frame_b, make_camera(camera, bounds, layout.right, i, rows.size()), layers, 1);
         thread.overlay->draw([&] {
             diff_legend(layout.legend);
             caption("a", layout.left, frame_a, data_a.path());

@@ -74,6 +74,31 @@ Bounds RecordingData::bounds(const std::vector<std::uint64_t>& rows) {
     return bounds;
 }
 
+std::vector<Bounds> RecordingData::collision_bounds(const std::vector<std::uint64_t>& rows) {
+    std::vector<Bounds> out(rows.size());
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const std::uint64_t row = rows[i];
+        if (m_pair_counts[row] == 0) continue;
+        std::map<std::uint32_t, std::vector<std::uint32_t>> triangles;  // per object, colliding ones
+        for (const TrianglePair& pair : m_recording.pairs(row)) {
+            triangles[pair.obj_a].push_back(pair.tri_a);
+            triangles[pair.obj_b].push_back(pair.tri_b);
+        }
+        for (const auto& [object, list] : triangles) {
+            if (object >= object_count()) continue;  // load() names the bad pair
+            const std::vector<float> xyz = m_recording.positions(object, row);
+            const auto faces = topology(object, m_recording.topology_at(object, m_indices[row]));
+            for (const std::uint32_t t : list) {
+                if (t >= faces->size()) continue;
+                for (const std::uint32_t v : (*faces)[t]) {
+                    if (3 * std::size_t(v) + 2 < xyz.size()) out[i].add(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]);
+                }
+            }
+        }
+    }
+    return out;
+}
+
 NamedValues RecordingData::row_of(const std::vector<recorder::Series<double>>& series, std::uint64_t row) {
     NamedValues values;
     // A group whose first value is NaN was not set on this frame (the method does not report it).

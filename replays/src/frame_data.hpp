@@ -72,6 +72,7 @@ public:
     explicit RecordingData(const std::filesystem::path& path);
 
     const std::string& path() const { return m_path; }
+    const recorder::Recording& recording() const { return m_recording; }
     std::uint64_t rows() const { return m_indices.size(); }
     const std::vector<std::uint32_t>& indices() const { return m_indices; }
     const std::vector<std::string>& methods() const { return m_methods; }
@@ -86,6 +87,9 @@ public:
     std::vector<std::uint64_t> rows_in(std::uint32_t begin, std::uint32_t end) const;
     /// The bounds of every vertex of the given rows.
     Bounds bounds(const std::vector<std::uint64_t>& rows);
+    /// Per row, the box of the vertices of its colliding triangles (empty: no pairs, or their
+    /// positions were not recorded): what `--camera focus` frames.
+    std::vector<Bounds> collision_bounds(const std::vector<std::uint64_t>& rows);
     /// Everything of row `row`; the culling state in ObjectFrame::states.
     FrameData load(std::uint64_t row, std::uint64_t ordinal);
 

@@ -67,9 +67,13 @@ unsigned parse_layers(const std::string& list) {
 
 CameraSpec parse_camera(const std::string& spec) {
     CameraSpec camera;
-    const std::string usage = "--camera must be auto, orbit, orbit:DEGREES_PER_FRAME or fixed:EX,EY,EZ[:TX,TY,TZ], not '" +
-                              spec + "'";
+    const std::string usage =
+        "--camera must be auto, orbit, orbit:DEGREES_PER_FRAME, focus or fixed:EX,EY,EZ[:TX,TY,TZ], not '" + spec + "'";
     if (spec == "auto") return camera;
+    if (spec == "focus") {
+        camera.kind = CameraSpec::Kind::Focus;
+        return camera;
+    }
     if (spec == "orbit") {
         camera.kind = CameraSpec::Kind::Orbit;
         return camera;
@@ -91,6 +95,11 @@ CameraSpec parse_camera(const std::string& spec) {
         return camera;
     }
     throw InputError(usage);
+}
+
+char parse_up_axis(const std::string& text) {
+    if (text == "x" || text == "y" || text == "z") return text[0];
+    throw InputError("--up must be x, y or z, not '" + text + "'");
 }
 
 SheetSelection parse_sheet_selection(const std::string& text) {

@@ -16,6 +16,8 @@ namespace collidescope::replays {
 void prepare_output_dir(const std::filesystem::path& dir);
 /// The rows of `data` in the options' frame range. Throws InputError naming the file when none.
 std::vector<std::uint64_t> replay_rows(const RecordingData& data, const ReplayOptions& options);
+/// `camera` with its up axis resolved: --up when given, else the recording's `up_axis`, else z.
+CameraSpec resolved_camera(const CameraSpec& camera, const RecordingData& data);
 /// The session's annotations; points into `data`.
 SessionView session_view(const RecordingData& data);
 

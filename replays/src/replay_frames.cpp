@@ -5,12 +5,14 @@
 
 #include "contact_sheet.hpp"
 #include "frame_data.hpp"
+#include "ordered_video.hpp"
 #include "png.hpp"
 #include "render_pool.hpp"
 #include "replay_common.hpp"
 
 #include "collidescope/error.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <map>
@@ -40,7 +42,54 @@ std::filesystem::path frame_file(const std::filesystem::path& dir, const char* p
     return dir / name;
 }
 
+// The clip's frame rate: the recording's `fps`; else, when it has frame times (a point cache
+// with times but no rate), one over the median step between them; else 30.
+double clip_fps(const recorder::Recording& recording) {
+    if (recording.fps() > 0) return recording.fps();
+    const std::vector<double> times = recording.frame_times();
+    std::vector<double> steps;
+    for (std::size_t k = 1; k < times.size(); ++k) {
+        if (times[k] > times[k - 1]) steps.push_back(times[k] - times[k - 1]);
+    }
+    if (steps.empty()) return 30.0;
+    std::nth_element(steps.begin(), steps.begin() + std::ptrdiff_t(steps.size() / 2), steps.end());
+    return std::clamp(1.0 / steps[steps.size() / 2], 1.0, 1000.0);
+}
+
+// The clip, opened before any frame is rendered (a bad path fails at once), at clip_fps.
+std::unique_ptr<OrderedVideo> open_ordered_video(const RecordingData& data, const ReplayOptions& options,
+                                                 ReplaySummary& summary) {
+    if (options.video.empty()) return nullptr;
+    VideoSettings settings;
+    settings.path = options.video;
+    settings.width = options.width;
+    settings.height = options.height;
+    settings.fps = clip_fps(data.recording());
+    summary.video = options.video;
+    summary.video_fps = settings.fps;
+    return std::make_unique<OrderedVideo>(open_video(settings));
+}
+
+// --camera focus: the region to frame in each replayed frame; empty for other cameras, and
+// when no replayed frame has collisions (the camera then frames the whole scene, as auto).
+std::vector<Framing> focus_of(const CameraSpec& camera, RecordingData& data, const std::vector<std::uint64_t>& rows,
+                              const Bounds& bounds, ReplaySummary& summary) {
+    if (camera.kind != CameraSpec::Kind::Focus) return {};
+    const std::vector<Bounds> colliding = data.collision_bounds(rows);
+    if (std::all_of(colliding.begin(), colliding.end(), [](const Bounds& box) { return box.empty(); })) {
+        summary.notes.push_back("no colliding triangles in the replayed frames: --camera focus frames the whole scene");
+        return {};
+    }
+    return focus_path(colliding, bounds);
+}
+
 }  // namespace
+
+CameraSpec resolved_camera(const CameraSpec& camera, const RecordingData& data) {
+    CameraSpec resolved = camera;
+    if (resolved.up == 0) resolved.up = data.recording().up_axis();
+    return resolved;
+}
 
 void prepare_output_dir(const std::filesystem::path& dir) {
     std::error_code error;
@@ -81,8 +130,13 @@ SessionView session_view(const RecordingData& data) {
 ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions& options, const FrameDone& frame_done) {
     RecordingData data(recording);
     const std::vector<std::uint64_t> rows = replay_rows(data, options);
-    prepare_output_dir(options.output_dir);
+    const bool pngs = !options.output_dir.empty();
+    if (pngs) prepare_output_dir(options.output_dir);
+    ReplaySummary summary;
+    const std::unique_ptr<OrderedVideo> video = open_ordered_video(data, options, summary);
     const Bounds bounds = data.bounds(rows);
+    const CameraSpec camera_spec = resolved_camera(options.camera, data);
+    const std::vector<Framing> focus = focus_of(camera_spec, data, rows, bounds, summary);
     const FrameLayout layout = frame_layout(options.width, options.height, options.layers);
     const SessionView session = session_view(data);
 
@@ -101,8 +155,7 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
     const TileSize tile = sheet_tile_size(layout.scene.w, layout.scene.h);
     std::map<std::uint64_t, SheetTile> tiles;
 
-    ReplaySummary summary;
-    summary.files.resize(rows.size());
+    if (pngs) summary.files.resize(rows.size());
     std::mutex reader_lock;
     std::mutex done_lock;
     bool any_depth = false;
@@ -119,15 +172,19 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
             frame = data.load(rows[i], i);
         }
         const double read = clock.lap();
-        const Camera camera = make_camera(options.camera, bounds, layout.scene, i, rows.size());
+        const Camera camera =
+            make_camera(camera_spec, bounds, layout.scene, i, rows.size(), focus.empty() ? nullptr : &focus[i]);
         thread.renderer->clear();
         thread.renderer->draw(frame, camera, options.layers);
         thread.overlay->draw_frame(frame, session, layout, options.layers);
         const double draw = clock.lap();
-        const std::vector<std::uint8_t> rgba = thread.renderer->read_rgba();
+        std::vector<std::uint8_t> rgba = thread.renderer->read_rgba();
         const double readback = clock.lap();
-        const std::filesystem::path file = frame_file(options.output_dir, "frame", frame.frame);
-        write_png(file, rgba, options.width, options.height);
+        std::filesystem::path file;
+        if (pngs) {
+            file = frame_file(options.output_dir, "frame", frame.frame);
+            write_png(file, rgba, options.width, options.height);
+        }
         const double png = clock.lap();
         SheetTile sheet_tile;
         if (on_sheet.count(i) != 0) {
@@ -137,8 +194,9 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
                           frame.frame,
                           frame_mode(frame.method, frame.decision), frame.method, frame.colliding.size(), totals[i]};
         }
+        if (video) video->add(i, std::move(rgba));
         const std::lock_guard<std::mutex> guard(done_lock);
-        summary.files[i] = file;
+        if (pngs) summary.files[i] = file;
         summary.read_seconds += read;
         summary.draw_seconds += draw;
         summary.readback_seconds += readback;
@@ -154,6 +212,10 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
         ++summary.frames;
         if (frame_done) frame_done(rows.size());
     });
+    if (video) {
+        video->finish(rows.size());
+        summary.video_seconds = video->seconds();
+    }
     summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     summary.threads = render_threads(options.threads, rows.size());
     if ((options.layers & k_layer_depth) != 0 && !any_depth) {

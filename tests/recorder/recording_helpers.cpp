@@ -83,6 +83,10 @@ std::vector<CapturedFrame> record_in_process(const Scene& scene, const std::file
     session.frame_begin = begin;
     session.frame_end = end;
     for (std::uint32_t k = 0; k < scene.source->object_count(); ++k) session.object_names.push_back(scene.source->object_name(k));
+    session.frame_times = scene.frame_times;  // as `record` passes them (app/record_command.cpp)
+    session.fps = scene.fps;
+    session.clip = scene.clip;
+    session.up_axis = scene.up_axis;
     recorder::RecorderConfig config;
     config.path = file;
     config.queue_bytes = 1u << 16;  // small: the engine waits for the writer now and then

@@ -72,6 +72,45 @@ void overwrite_pair_element(const std::filesystem::path& file, std::uint64_t row
     H5Fclose(h5);
 }
 
+void set_time_attributes(const std::filesystem::path& file, double fps, char up_axis) {
+    const hid_t h5 = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(h5, 0) << file;
+    const hid_t scalar = H5Screate(H5S_SCALAR);
+    const hid_t fps_attr = H5Acreate2(h5, "fps", H5T_IEEE_F64LE, scalar, H5P_DEFAULT, H5P_DEFAULT);
+    EXPECT_GE(H5Awrite(fps_attr, H5T_NATIVE_DOUBLE, &fps), 0);
+    H5Aclose(fps_attr);
+    const hid_t text = H5Tcopy(H5T_C_S1);
+    H5Tset_size(text, 2);
+    H5Tset_strpad(text, H5T_STR_NULLTERM);
+    const char up[2] = {up_axis, 0};
+    const hid_t up_attr = H5Acreate2(h5, "up_axis", text, scalar, H5P_DEFAULT, H5P_DEFAULT);
+    EXPECT_GE(H5Awrite(up_attr, text, up), 0);
+    H5Aclose(up_attr);
+    H5Tclose(text);
+    H5Sclose(scalar);
+    H5Fclose(h5);
+}
+
+void add_frame_times(const std::filesystem::path& file, const std::vector<double>& times) {
+    const hid_t h5 = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(h5, 0) << file;
+    const hsize_t rows = times.size();
+    const hid_t space = H5Screate_simple(1, &rows, nullptr);
+    const hid_t dataset = H5Dcreate2(h5, "/frames/time", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    EXPECT_GE(H5Dwrite(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, times.data()), 0);
+    const hid_t text = H5Tcopy(H5T_C_S1);
+    H5Tset_size(text, 2);
+    const hid_t scalar = H5Screate(H5S_SCALAR);
+    const hid_t unit = H5Acreate2(dataset, "unit", text, scalar, H5P_DEFAULT, H5P_DEFAULT);
+    EXPECT_GE(H5Awrite(unit, text, "s"), 0);
+    H5Aclose(unit);
+    H5Sclose(scalar);
+    H5Tclose(text);
+    H5Dclose(dataset);
+    H5Sclose(space);
+    H5Fclose(h5);
+}
+
 std::filesystem::path test_dir(const std::string& name) {
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("collidescope_replays_" + name);
     std::filesystem::remove_all(dir);

@@ -51,6 +51,14 @@ void record(const std::string& scene, const std::string& method, const std::file
 /// Overwrites element (row, column) of the 2-D uint32 dataset /collisions/pairs.
 void overwrite_pair_element(const std::filesystem::path& file, std::uint64_t row, int column, std::uint32_t value);
 
+/// Adds the root attributes `fps` and `up_axis` (schema 1.4) to a recording of an untimed
+/// scene, as `record` writes them for an animated model's.
+void set_time_attributes(const std::filesystem::path& file, double fps, char up_axis);
+
+/// Adds /frames/time (seconds, one per recorded frame, unit "s") to a recording, without `fps`:
+/// a point cache's times without a rate.
+void add_frame_times(const std::filesystem::path& file, const std::vector<double>& times);
+
 /// A fresh directory for one test.
 std::filesystem::path test_dir(const std::string& name);
 

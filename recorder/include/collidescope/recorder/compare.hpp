@@ -30,6 +30,12 @@ struct ComparisonReport {
     std::uint64_t frames_only_b = 0;
     std::vector<FrameDifference> differences;    ///< matched frames whose pair sets differ, in order
     std::vector<StageComparison> stages;         ///< stages present in both
+    /// Schema 1.4: whether both files have /frames/time, and then the first matched frame
+    /// whose times differ (the same frame number sampled at another time: another --fps or
+    /// clip) and how many do. Times do not change identical_pairs().
+    bool both_timed = false;
+    std::optional<std::uint32_t> first_time_difference;
+    std::uint64_t time_differences = 0;
     /// Same frames and the same pairs in every frame.
     bool identical_pairs() const { return differences.empty() && frames_only_a == 0 && frames_only_b == 0; }
 };

@@ -72,6 +72,16 @@ public:
     const std::vector<ObjectInfo>& objects() const;
     /// Scene frame number of every complete frame.
     std::vector<std::uint32_t> frame_indices() const;
+    /// True when the file has /frames/time (schema 1.4, a scene whose inputs carry time).
+    bool has_frame_times() const;
+    /// Seconds from the clip's start of every complete frame (/frames/time); empty when absent.
+    std::vector<double> frame_times() const;
+    /// Frames per second of the source animation (attribute `fps`); 0 when the file does not say.
+    double fps() const;
+    /// The source animation clip's name (attribute `clip`); "" when none.
+    const std::string& clip() const;
+    /// The axis the inputs call up ('x', 'y', 'z'; attribute `up_axis`); 0 when the file does not say.
+    char up_axis() const;
     /// Method name of every complete frame.
     std::vector<std::string> frame_methods() const;
     std::vector<Series<double>> stage_ms() const;

@@ -34,6 +34,13 @@ struct SessionInfo {
     std::string tool_version;               ///< COLLIDESCOPE_VERSION
     std::string git_revision;               ///< COLLIDESCOPE_GIT_REVISION
     std::vector<std::string> object_names;  ///< in input order
+    // What the inputs say about time (Scene::frame_times, fps, clip, up_axis): written only
+    // when present (schema 1.4), so recordings of untimed scenes stay as they were.
+    /// Seconds of every scene frame, indexed by scene frame number (size >= frame_end), or empty.
+    std::vector<double> frame_times;
+    double fps = 0;                         ///< 0 = unknown (no `fps` attribute)
+    std::string clip;                       ///< "" = none (no `clip` attribute)
+    char up_axis = 0;                       ///< 'x', 'y', 'z'; 0 = unknown (no `up_axis` attribute)
 };
 
 /// Options of one recording.

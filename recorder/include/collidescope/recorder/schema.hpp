@@ -20,7 +20,9 @@ inline constexpr std::int64_t k_version_major = 1;
 /// 1.1: /frames/gpu, /frames/aabb, /gpu. 1.2: /frames/decision, /frames/hybrid, /gpu/survivors,
 /// /gpu/depth; string attributes fixed-length (1.0 and 1.1 wrote variable-length ones).
 /// 1.3: the root attribute `interrupted` (a run stopped early by a signal).
-inline constexpr std::int64_t k_version_minor = 3;
+/// 1.4: /frames/time and the root attributes `fps`, `clip`, `up_axis`, each only when the
+/// scene's inputs say them (animated models, point caches); absent otherwise.
+inline constexpr std::int64_t k_version_minor = 4;
 
 // Root attributes.
 inline constexpr const char* k_attr_schema = "schema";
@@ -34,12 +36,21 @@ inline constexpr const char* k_attr_positions_stride = "positions_stride";  ///<
 inline constexpr const char* k_attr_interrupted = "interrupted";
 /// Every dataset's unit, H5MD style: a string attribute named `unit`.
 inline constexpr const char* k_attr_unit = "unit";
+/// Frames per second of the source animation's sampling (float64; only when the inputs say). 1.4.
+inline constexpr const char* k_attr_fps = "fps";
+/// The source animation clip's name (string; only when the inputs name one). 1.4.
+inline constexpr const char* k_attr_clip = "clip";
+/// The axis the inputs call up: "x", "y" or "z" (string; only when a file says). 1.4.
+inline constexpr const char* k_attr_up_axis = "up_axis";
 /// On each /objects/<k> group: the object's name.
 inline constexpr const char* k_attr_name = "name";
 
 // Groups and datasets.
 inline constexpr const char* k_frames = "/frames";
 inline constexpr const char* k_frame_index = "/frames/index";    ///< uint32, scene frame number
+/// float64, seconds from the clip's start of each recorded frame (unit "s"); only when the
+/// scene's inputs carry time. 1.4.
+inline constexpr const char* k_frame_time = "/frames/time";
 inline constexpr const char* k_frame_method = "/frames/method";  ///< enum (uint8) of method names
 inline constexpr const char* k_frame_ms = "/frames/ms";          ///< group: float64 per stage
 inline constexpr const char* k_frame_counts = "/frames/counts";  ///< group: uint64 per count
@@ -87,6 +98,7 @@ inline constexpr const char* k_vertex_offsets = "vertex_offsets";   ///< (F + 1)
 
 // Units.
 inline constexpr const char* k_unit_ms = "ms";
+inline constexpr const char* k_unit_seconds = "s";
 /// Dimensionless: counts, indices, offsets (UDUNITS' "1").
 inline constexpr const char* k_unit_none = "1";
 /// Vertex positions keep the input's coordinates; their length unit is whatever the input used.

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 namespace collidescope::replays {
 
@@ -56,10 +57,37 @@ struct Camera {
     std::array<double, 3> project(double x, double y, double z) const;
 };
 
+/// A sphere the camera keeps in view: centre and radius, input length units.
+struct Framing {
+    std::array<double, 3> center{};
+    double radius = 1;
+};
+
+/// How `--camera focus` follows the collisions (focus_path).
+struct FocusSettings {
+    double padding = 1.6;         ///< the framed radius over the colliding triangles' half diagonal
+    double min_fraction = 0.06;   ///< smallest framed radius, as a fraction of the whole scene's
+    std::uint32_t hold_frames = 12;  ///< frames without collisions that keep the last region
+    double smoothing = 0.2;       ///< exponential smoothing factor per frame (0 < s <= 1; 1 = none)
+};
+
+/// The region `--camera focus` frames in each replayed frame: `colliding[k]` is the box of
+/// frame k's colliding triangles (empty: none), `whole` the box of every replayed frame. A
+/// frame with collisions aims at their box, padded and at least a minimum size; a frame
+/// without keeps the last region for `hold_frames`, then eases back to the whole scene. The
+/// aims are smoothed forward and then backward (exponentially, so the camera neither lags
+/// nor jumps): from one frame to the next, the centre and the log radius each move by at most
+/// `smoothing` times the largest distance between two frames' aims.
+std::vector<Framing> focus_path(const std::vector<Bounds>& colliding, const Bounds& whole,
+                                const FocusSettings& settings = {});
+
 /// The camera of replayed frame number `ordinal` (0 = the first replayed frame) of `frames`,
-/// framing `bounds` into `viewport` according to `spec`. Auto and Fixed give the same camera
-/// for every frame; Orbit turns by spec.degrees_per_frame per frame (or one turn in all).
+/// framing `bounds` into `viewport` according to `spec`, with spec.up up on screen. Auto and
+/// Fixed give the same camera for every frame; Orbit turns by spec.degrees_per_frame per frame
+/// (or one turn in all) about the up axis; Focus frames `focus` (this frame's entry of
+/// focus_path; nullptr: as Auto), with the near plane just in front of it, so nothing between
+/// the eye and the collisions hides them.
 Camera make_camera(const CameraSpec& spec, const Bounds& bounds, const Rect& viewport, std::uint64_t ordinal,
-                   std::uint64_t frames);
+                   std::uint64_t frames, const Framing* focus = nullptr);
 
 }  // namespace collidescope::replays

@@ -32,6 +32,7 @@ struct CameraSpec {
         Auto,   ///< frames the bounds of every replayed frame, from a fixed direction
         Orbit,  ///< as Auto, turning about the vertical (z) axis around the bounds' centre
         Fixed,  ///< an explicit eye and target
+        Focus,  ///< as Auto, framing each frame's colliding triangles, smoothed over frames (focus_path)
     };
     Kind kind = Kind::Auto;
     /// Orbit: degrees turned per replayed frame; 0 = one full turn over the replayed frames.
@@ -40,9 +41,16 @@ struct CameraSpec {
     std::array<double, 3> target{};  ///< Fixed: the point looked at
     bool target_given = false;       ///< Fixed: false = the bounds' centre
     double fov_degrees = 40;         ///< vertical field of view
+    /// The world axis that points up on screen: 'x', 'y' or 'z' (`--up`; the recording's
+    /// `up_axis` when it has one; 0 = 'z'). Auto, Orbit and Focus look from above the front
+    /// right in that frame; Orbit turns about it.
+    char up = 0;
 };
 
-/// Parses `auto`, `orbit`, `orbit:DEG` (degrees per frame) or `fixed:EX,EY,EZ[:TX,TY,TZ]`.
+/// Parses `x`, `y` or `z` for CameraSpec::up. Throws InputError naming the text.
+char parse_up_axis(const std::string& text);
+
+/// Parses `auto`, `orbit`, `orbit:DEG` (degrees per frame), `focus` or `fixed:EX,EY,EZ[:TX,TY,TZ]`.
 /// Throws InputError naming the spec.
 CameraSpec parse_camera(const std::string& spec);
 
@@ -58,7 +66,10 @@ SheetSelection parse_sheet_selection(const std::string& text);
 
 /// Options of one replay.
 struct ReplayOptions {
-    std::filesystem::path output_dir;  ///< PNGs go here (created when missing)
+    std::filesystem::path output_dir;  ///< PNGs go here (created when missing); "" = no PNGs (--video alone)
+    /// The frames as a clip too (docs/replay.md, "Video"): .mp4 (H.264) or .gif; "" = none. At
+    /// the recording's fps, or 30 when it does not say.
+    std::filesystem::path video;
     /// Scene frames to replay, half-open [frame_begin, frame_end); rows whose /frames/index lies
     /// outside are skipped. The default is every recorded frame.
     std::uint32_t frame_begin = 0;

@@ -19,8 +19,11 @@ using FrameDone = std::function<void(std::uint64_t total)>;
 
 /// What a replay did.
 struct ReplaySummary {
-    std::uint64_t frames = 0;             ///< PNGs written
-    std::vector<std::filesystem::path> files;  ///< the PNGs, in frame order
+    std::uint64_t frames = 0;             ///< frames rendered (PNGs written, when asked for)
+    std::vector<std::filesystem::path> files;  ///< the PNGs, in frame order (empty without output_dir)
+    std::filesystem::path video;          ///< the clip written ("" when none was asked for)
+    double video_fps = 0;                 ///< its frame rate
+    double video_seconds = 0;             ///< seconds spent encoding it (thread seconds, within `seconds`)
     std::filesystem::path contact_sheet;  ///< "" when none was asked for
     double seconds = 0;                   ///< wall time of the rendering (after reading the metadata)
     int threads = 0;                      ///< render threads used
@@ -40,9 +43,14 @@ struct ReplaySummary {
     std::uint64_t only_in_b = 0;
 };
 
-/// Replays `recording` into `options.output_dir`/frame_NNNN.png (NNNN = the scene frame number).
-/// Throws InputError naming the file (unreadable or corrupt recording, no frame in range,
-/// unwritable output) or UnavailableError (no GL context).
+/// Checks a clip's name for ReplayOptions::video: ".mp4" or ".gif" (any case), else throws
+/// InputError naming the file and the formats known. Touches no file.
+void check_video_path(const std::filesystem::path& path);
+
+/// Replays `recording` into `options.output_dir`/frame_NNNN.png (NNNN = the scene frame number)
+/// and/or the clip `options.video`. Throws InputError naming the file (unreadable or corrupt
+/// recording, no frame in range, unwritable output; a failed clip leaves no file) or
+/// UnavailableError (no GL context, no H.264 encoder).
 ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions& options,
                      const FrameDone& frame_done = {});
 

@@ -1,0 +1,31 @@
+#pragma once
+// Decoding a clip back with libavformat and libavcodec (the replayer's video tests): frame
+// count, size, codec, frame rate, and the first frame as RGBA.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace collidescope::testing {
+
+struct DecodedVideo {
+    bool opened = false;        ///< false: `error` says why
+    std::string error;
+    std::string codec;          ///< libavcodec's name ("h264", "gif")
+    std::string pixel_format;   ///< of the coded frames ("yuv420p", "pal8", "bgra")
+    std::string profile;        ///< "High", "Main", ... ("" when the codec has none)
+    int width = 0;
+    int height = 0;
+    double fps = 0;             ///< the stream's average frame rate
+    std::uint64_t frames = 0;   ///< frames decoded
+    std::vector<std::uint8_t> first_rgba;  ///< the first frame, width * height RGBA
+};
+
+/// Decodes every frame of the first video stream of `file`.
+DecodedVideo decode_video(const std::filesystem::path& file);
+
+/// Mean absolute difference over the R, G and B of two equal-sized RGBA images (0-255).
+double mean_rgb_difference(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b);
+
+}  // namespace collidescope::testing
