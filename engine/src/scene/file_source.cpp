@@ -50,6 +50,10 @@ private:
     };
 
     ObjectFrame object_frame(ObjectState& object, std::uint32_t index) {
+        if (object.input.animated) {
+            return {object.input.animated->topology(object.input.instance),
+                    object.input.animated->vertices(object.input.instance, index)};
+        }
         if (object.input.is_static) {
             if (!object.topology) {
                 MeshData mesh = read(object, 0, index);

@@ -6,6 +6,8 @@
 
 #include "collidescope/scene.hpp"
 
+#include "scene/animated_file.hpp"
+
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -20,6 +22,10 @@ struct FileObject {
     std::string origin;                        ///< the file or pattern as given, for messages
     std::vector<std::filesystem::path> files;  ///< one per frame; exactly one when is_static
     bool is_static = false;                    ///< the same mesh in every frame
+    /// A mesh instance of an animated model file (files empty, is_static false): its frames
+    /// are posed by `animated`, which the file's other instances share.
+    std::shared_ptr<AnimatedFile> animated;
+    std::uint32_t instance = 0;                ///< the instance within `animated`
 };
 
 /// A FrameSource over `objects` with `frame_count` frames (every sequence object holds at
