@@ -120,6 +120,7 @@ TEST(AnimatedInputs, BcnEpilepticFramesEqualTheReferenceAtKOverFps) {
     EXPECT_EQ(scene.source->frame_count(),
               static_cast<std::uint32_t>(std::floor(clip.mDuration / clip.mTicksPerSecond * 5 + 1e-9)) + 1);
     EXPECT_EQ(scene.clip, "Epileptisch");
+    EXPECT_EQ(scene.name, "BCN_Epileptic");
     EXPECT_EQ(scene.up_axis, 0);  // .X says nothing
     for (const std::uint32_t k : {0u, 7u, scene.source->frame_count() - 1}) {
         const Frame frame = scene.source->frame(k);

@@ -21,6 +21,7 @@
 #include <cmath>
 #include <limits>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace collidescope::animation {
 namespace {
@@ -67,11 +68,15 @@ private:
     // Depth-first with an explicit stack (deep skeletons do not grow the call stack).
     void read_nodes() {
         std::vector<std::pair<const aiNode*, std::int32_t>> stack{{m_scene.mRootNode, -1}};
+        std::unordered_set<const aiNode*> visited;
         while (!stack.empty()) {
             const auto [node, parent] = stack.back();
             stack.pop_back();
             if (node == nullptr) fail("node tree holds a null node");
-            if (m_model.nodes.size() >= std::numeric_limits<std::int32_t>::max()) fail("too many nodes");
+            if ((node->mNumChildren > 0 && node->mChildren == nullptr) || (node->mNumMeshes > 0 && node->mMeshes == nullptr)) {
+                fail("node " + quoted(node->mName) + ": children or mesh list missing");
+            }
+            if (!visited.insert(node).second) fail("node " + quoted(node->mName) + " appears twice in the node tree");
             const auto index = static_cast<std::int32_t>(m_model.nodes.size());
             m_model.nodes.push_back({node->mName.C_Str(), parent, to_affine(node->mTransformation)});
             m_ai_nodes.push_back(node);
@@ -128,9 +133,11 @@ private:
 
     void read_faces(const aiMesh& mesh, unsigned index, MeshInstance& instance) {
         std::vector<std::uint32_t> corners;
+        if (mesh.mNumFaces > 0 && mesh.mFaces == nullptr) fail(mesh_label(index) + ": faces missing");
         for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
             const aiFace& face = mesh.mFaces[f];
             if (face.mNumIndices < 3) continue;
+            if (face.mIndices == nullptr) fail(mesh_label(index) + " face " + std::to_string(f) + ": indices missing");
             corners.assign(face.mIndices, face.mIndices + face.mNumIndices);
             for (const std::uint32_t corner : corners) {
                 if (corner < mesh.mNumVertices) continue;
@@ -142,6 +149,7 @@ private:
     }
 
     void read_morph_targets(const aiMesh& mesh, unsigned index, MeshInstance& instance) {
+        if (mesh.mNumAnimMeshes > 0 && mesh.mAnimMeshes == nullptr) fail(mesh_label(index) + ": morph targets missing");
         for (unsigned t = 0; t < mesh.mNumAnimMeshes; ++t) {
             const aiAnimMesh* target = mesh.mAnimMeshes[t];
             if (target == nullptr || target->mVertices == nullptr || target->mNumVertices != mesh.mNumVertices) {
@@ -156,12 +164,13 @@ private:
     // Influences per vertex, sorted by bone, zero weights dropped, normalised to sum 1.
     void read_bones(const aiMesh& mesh, unsigned index, MeshInstance& instance) {
         if (mesh.mNumBones == 0) return;
+        if (mesh.mBones == nullptr) fail(mesh_label(index) + ": bones missing");
         std::vector<std::vector<std::pair<std::uint32_t, double>>> per_vertex(mesh.mNumVertices);
         double total = 0;
         for (unsigned b = 0; b < mesh.mNumBones; ++b) {
             const aiBone* bone = mesh.mBones[b];
             const std::string label = mesh_label(index) + " bone " + std::to_string(b);
-            if (bone == nullptr) fail(label + ": missing");
+            if (bone == nullptr || (bone->mNumWeights > 0 && bone->mWeights == nullptr)) fail(label + ": missing");
             const auto node = m_node_index.find(bone->mName.C_Str());
             if (node == m_node_index.end()) fail(label + " " + quoted(bone->mName) + " names no node");
             instance.bone_nodes.push_back(node->second);
@@ -240,6 +249,7 @@ private:
     }
 
     void read_clip(unsigned a) {
+        if (m_scene.mAnimations == nullptr) fail("clips missing");
         const aiAnimation* animation = m_scene.mAnimations[a];
         const std::string label = "clip " + std::to_string(a);
         if (animation == nullptr) fail(label + ": missing");
@@ -252,6 +262,10 @@ private:
                  " ticks at " + std::to_string(animation->mTicksPerSecond) + " ticks per second");
         }
         const std::string clip_label = label + " " + quoted(animation->mName);
+        if ((animation->mNumChannels > 0 && animation->mChannels == nullptr) ||
+            (animation->mNumMorphMeshChannels > 0 && animation->mMorphMeshChannels == nullptr)) {
+            fail(clip_label + ": channels missing");
+        }
         for (unsigned c = 0; c < animation->mNumChannels; ++c) read_channel(*animation, c, clip_label, clip);
         for (unsigned c = 0; c < animation->mNumMorphMeshChannels; ++c) read_morph(*animation, c, clip_label, clip);
         m_model.clips.push_back(std::move(clip));
@@ -275,6 +289,11 @@ private:
         const auto node = m_node_index.find(channel->mNodeName.C_Str());
         if (node == m_node_index.end()) return;
         const std::string label = clip_label + " channel " + std::to_string(c) + " " + quoted(channel->mNodeName);
+        if ((channel->mNumPositionKeys > 0 && channel->mPositionKeys == nullptr) ||
+            (channel->mNumRotationKeys > 0 && channel->mRotationKeys == nullptr) ||
+            (channel->mNumScalingKeys > 0 && channel->mScalingKeys == nullptr)) {
+            fail(label + ": keys missing");
+        }
         aiVector3D rest_scaling, rest_position;
         aiQuaternion rest_rotation;
         m_ai_nodes[node->second]->mTransformation.Decompose(rest_scaling, rest_rotation, rest_position);
@@ -319,12 +338,16 @@ private:
         if (channel == nullptr) fail(label + ": missing");
         const auto node = m_node_index.find(channel->mName.C_Str());
         if (node == m_node_index.end()) fail(label + " " + quoted(channel->mName) + " names no node");
+        if (channel->mNumKeys > 0 && channel->mKeys == nullptr) fail(label + ": keys missing");
         MorphChannel out;
         out.node = node->second;
         for (unsigned k = 0; k < channel->mNumKeys; ++k) {
             const aiMeshMorphKey& key = channel->mKeys[k];
             const std::string key_label = label + " key " + std::to_string(k);
             check_time(key.mTime, key_label);
+            if (key.mNumValuesAndWeights > 0 && (key.mValues == nullptr || key.mWeights == nullptr)) {
+                fail(key_label + ": values missing");
+            }
             MorphKey morph{key.mTime, {}};
             for (unsigned i = 0; i < key.mNumValuesAndWeights; ++i) {
                 const unsigned target = key.mValues[i];

@@ -246,7 +246,15 @@ std::uint32_t common_frame_count(const std::vector<FileObject>& objects) {
 std::string scene_name(const SceneInputs& inputs) {
     if (inputs.manifest_name) return *inputs.manifest_name;
     std::string name;
-    for (const FileObject& object : inputs.objects) name += (name.empty() ? "" : "+") + object.name;
+    const AnimatedFile* last_file = nullptr;
+    for (const FileObject& object : inputs.objects) {
+        // An animated file's instances are named once, after the file.
+        if (object.animated && object.animated.get() == last_file) continue;
+        const std::string part = object.animated ? object_name_from(std::filesystem::path(object.origin).filename().string())
+                                                 : object.name;
+        last_file = object.animated.get();
+        name += (name.empty() ? "" : "+") + part;
+    }
     return name;
 }
 
