@@ -150,6 +150,17 @@ TEST(AnimatedInputs, GltfSaysYUp) {
     EXPECT_EQ(scene.source->frame_count(), static_cast<std::uint32_t>(std::floor(5.5 * 30)) + 1);
 }
 
+TEST(AnimatedInputs, FbxUpAxisComesFromItsGlobalSettingsAlsoForAStaticFile) {
+    REQUIRE_TESTMODEL(animated, "FBX/animation_with_skeleton.fbx");
+    EXPECT_EQ(open(animated).up_axis, 'y');  // UpAxis 1 in the file's GlobalSettings
+    REQUIRE_TESTMODEL(still, "FBX/box.fbx");
+    const Scene scene = open(still);
+    EXPECT_EQ(scene.source->frame_count(), 1u);
+    EXPECT_EQ(scene.up_axis, 'y');
+    EXPECT_TRUE(scene.frame_times.empty());
+    EXPECT_EQ(scene.fps, 0);
+}
+
 TEST(AnimatedInputs, AnimTestXBoneNamingNoNodeFailsAtOpen) {
     REQUIRE_TESTMODEL(file, "X/anim_test.x");
     const std::string message = error_of({file.string()});

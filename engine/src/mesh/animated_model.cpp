@@ -88,10 +88,14 @@ private:
     void read_up_axis() {
         const std::string extension = lowercase(m_file.extension().string());
         if (extension == ".gltf" || extension == ".glb") m_model.up_axis = 'y';  // glTF 2.0, 3.4
-        const aiMetadata* meta = m_scene.mRootNode == nullptr ? nullptr : m_scene.mRootNode->mMetaData;
-        std::int32_t axis = -1;
-        if (meta != nullptr && meta->Get("UpAxis", axis) && axis >= 0 && axis <= 2) {
-            m_model.up_axis = "xyz"[axis];
+        // FBX: assimp puts the file's GlobalSettings UpAxis on the scene's metadata (some
+        // importers on the root node's). Its sign (UpAxisSign) is not kept.
+        for (const aiMetadata* meta : {m_scene.mMetaData, m_scene.mRootNode == nullptr ? nullptr : m_scene.mRootNode->mMetaData}) {
+            std::int32_t axis = -1;
+            if (meta != nullptr && meta->Get("UpAxis", axis) && axis >= 0 && axis <= 2) {
+                m_model.up_axis = "xyz"[axis];
+                return;
+            }
         }
     }
 

@@ -50,10 +50,14 @@ std::string lowercase(std::string text) {
     return text;
 }
 
-// Our own readers' formats (never animated) and gzipped files are not probed by assimp.
+// Probing imports the file once more than a static mesh needs, so formats that cannot hold an
+// animation (our own readers' PLY and OBJ; STL, OFF) and gzipped files are not probed.
 bool may_be_animated(const std::filesystem::path& path) {
     const std::string extension = lowercase(path.extension().string());
-    return extension != ".ply" && extension != ".obj" && extension != ".gz";
+    for (const char* still : {".ply", ".obj", ".gz", ".stl", ".off"}) {
+        if (extension == still) return false;
+    }
+    return true;
 }
 
 // A mesh file (static) or a frame pattern (one file per frame), named `name` or after the file.
