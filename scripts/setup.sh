@@ -13,8 +13,8 @@ PACKAGES=(
   libeigen3-dev libassimp-dev libtbb-dev zlib1g-dev libgmp-dev
   # app
   libcli11-dev nlohmann-json3-dev
-  # tests and benchmarks
-  libgtest-dev libgmock-dev libbenchmark-dev
+  # tests and benchmarks (assimp-testmodels: real animated models, /usr/share/assimp/models)
+  libgtest-dev libgmock-dev libbenchmark-dev assimp-testmodels
   # recorder
   libhdf5-dev hdf5-tools
   # Mode 2 and replays: offscreen GL (OSMesa; EGL through libglvnd, whose CMake target
