@@ -106,7 +106,9 @@ INSTANTIATE_TEST_SUITE_P(
     AssimpTestModels, AnimatedTestModel,
     ::testing::Values(Case{"X/BCN_Epileptic.X", true}, Case{"FBX/animation_with_skeleton.fbx", true},
                       Case{"FBX/huesitos.fbx", true}, Case{"glTF2/simple_skin/simple_skin.gltf", true},
-                      Case{"glTF2/glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf", false}),
+                      Case{"glTF2/glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf", false},
+                      Case{"X/Testwuson.X", true}, Case{"Collada/box_nested_animation.dae", true},
+                      Case{"Collada/anims_with_full_rotations_between_keys.DAE", false}),
     [](const ::testing::TestParamInfo<Case>& info) {
         std::string name = std::filesystem::path(info.param.file).stem().string();
         for (char& c : name) {

@@ -11,6 +11,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
+#include <filesystem>
+
 namespace collidescope {
 namespace {
 
@@ -53,11 +56,17 @@ TEST_P(AnimatedSelfCollision, WeldedCharacterPairsEqualBruteForceAndNoSeamPairs)
 }
 
 // animation_with_skeleton: 11,590 pairs on the unwelded rest pose (issue 28), none welded.
-// BCN_Epileptic: a few hundred per frame, where the dancer's parts really interpenetrate.
+// BCN_Epileptic: a few hundred per frame, where the dancer's parts really interpenetrate;
+// huesitos and Testwuson: skinned characters of other exporters.
 INSTANTIATE_TEST_SUITE_P(AssimpTestModels, AnimatedSelfCollision,
-                         ::testing::Values("FBX/animation_with_skeleton.fbx", "X/BCN_Epileptic.X"),
+                         ::testing::Values("FBX/animation_with_skeleton.fbx", "X/BCN_Epileptic.X",
+                                           "FBX/huesitos.fbx", "X/Testwuson.X"),
                          [](const ::testing::TestParamInfo<const char*>& info) {
-                             return info.index == 0 ? std::string("animation_with_skeleton") : std::string("BCN_Epileptic");
+                             std::string name = std::filesystem::path(info.param).stem().string();
+                             for (char& c : name) {
+                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                             }
+                             return name;
                          });
 
 }  // namespace
