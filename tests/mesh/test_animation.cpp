@@ -109,8 +109,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"glTF2/glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf", false},
                       Case{"X/Testwuson.X", true}, Case{"Collada/box_nested_animation.dae", true},
                       Case{"Collada/anims_with_full_rotations_between_keys.DAE", false}),
-    [](const ::testing::TestParamInfo<Case>& info) {
-        std::string name = std::filesystem::path(info.param.file).stem().string();
+    [](const ::testing::TestParamInfo<Case>& param) {
+        std::string name = std::filesystem::path(param.param.file).stem().string();
         for (char& c : name) {
             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
         }

@@ -61,8 +61,8 @@ TEST_P(AnimatedSelfCollision, WeldedCharacterPairsEqualBruteForceAndNoSeamPairs)
 INSTANTIATE_TEST_SUITE_P(AssimpTestModels, AnimatedSelfCollision,
                          ::testing::Values("FBX/animation_with_skeleton.fbx", "X/BCN_Epileptic.X",
                                            "FBX/huesitos.fbx", "X/Testwuson.X"),
-                         [](const ::testing::TestParamInfo<const char*>& info) {
-                             std::string name = std::filesystem::path(info.param).stem().string();
+                         [](const ::testing::TestParamInfo<const char*>& param) {
+                             std::string name = std::filesystem::path(param.param).stem().string();
                              for (char& c : name) {
                                  if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                              }

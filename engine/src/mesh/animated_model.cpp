@@ -9,7 +9,6 @@
 #include "mesh/animated_model.hpp"
 
 #include "mesh/fan.hpp"
-#include "mesh/weld.hpp"
 
 #include "collidescope/error.hpp"
 
@@ -63,7 +62,12 @@ public:
 private:
     [[noreturn]] void fail(const std::string& what) const { throw InputError(m_file.string() + ": " + what); }
 
-    static std::string quoted(const aiString& name) { return "'" + std::string(name.C_Str()) + "'"; }
+    // Appended piecewise: GCC 12 warns falsely (-Wrestrict) on "'" + std::string + "'".
+    static std::string quoted(const aiString& name) {
+        std::string text(1, '\'');
+        text.append(name.C_Str()).push_back('\'');
+        return text;
+    }
 
     // Depth-first with an explicit stack (deep skeletons do not grow the call stack).
     void read_nodes() {
@@ -206,52 +210,6 @@ private:
         }
     }
 
-    static void weld_instance(MeshInstance& instance) {
-        WeldKeys keys;
-        std::vector<double> key;
-        for (std::size_t v = 0; v < instance.base.size(); ++v) {
-            key.clear();
-            const auto push = [&](const Vec3& p) { key.insert(key.end(), {p.x(), p.y(), p.z()}); };
-            push(instance.base[v]);
-            for (const std::vector<Vec3>& target : instance.morph_targets) push(target[v]);
-            if (instance.skinned()) {
-                for (std::uint32_t i = instance.influence_begin[v]; i < instance.influence_begin[v + 1]; ++i) {
-                    key.push_back(instance.influence_bone[i]);
-                    key.push_back(instance.influence_weight[i]);
-                }
-            }
-            keys.add(key);
-        }
-        apply_welding(weld(keys), instance);
-    }
-
-    static void apply_welding(const Welding& welding, MeshInstance& instance) {
-        const auto keep = [&](std::vector<Vec3>& positions) {
-            std::vector<Vec3> kept;
-            kept.reserve(welding.kept.size());
-            for (const std::uint32_t v : welding.kept) kept.push_back(positions[v]);
-            positions = std::move(kept);
-        };
-        keep(instance.base);
-        for (std::vector<Vec3>& target : instance.morph_targets) keep(target);
-        for (TriIndices& triangle : instance.triangles) {
-            for (std::uint32_t& corner : triangle) corner = welding.remap[corner];
-        }
-        if (!instance.skinned()) return;
-        std::vector<std::uint32_t> begin{0}, bones;
-        std::vector<double> weights;
-        for (const std::uint32_t v : welding.kept) {
-            for (std::uint32_t i = instance.influence_begin[v]; i < instance.influence_begin[v + 1]; ++i) {
-                bones.push_back(instance.influence_bone[i]);
-                weights.push_back(instance.influence_weight[i]);
-            }
-            begin.push_back(static_cast<std::uint32_t>(bones.size()));
-        }
-        instance.influence_begin = std::move(begin);
-        instance.influence_bone = std::move(bones);
-        instance.influence_weight = std::move(weights);
-    }
-
     void read_clip(unsigned a) {
         if (m_scene.mAnimations == nullptr) fail("clips missing");
         const aiAnimation* animation = m_scene.mAnimations[a];
@@ -368,14 +326,18 @@ private:
         if (!out.keys.empty()) clip.morphs.push_back(std::move(out));
     }
 
-    // Every morph weight must name a target that each mesh of its node has.
+    // Every morph weight must name a target that each morphed mesh of its node has.
     void check_morph_targets() const {
         for (const Clip& clip : m_model.clips) {
             for (const MorphChannel& morph : clip.morphs) {
                 std::size_t targets = 0;
                 for (const MorphKey& key : morph.keys) targets = std::max(targets, key.weights.size());
                 for (const MeshInstance& instance : m_model.instances) {
-                    if (instance.node != morph.node || instance.morph_targets.size() >= targets) continue;
+                    // A mesh without targets is not morphed; one with fewer than weighed is broken.
+                    if (instance.node != morph.node || instance.morph_targets.empty() ||
+                        instance.morph_targets.size() >= targets) {
+                        continue;
+                    }
                     fail("clip '" + clip.name + "' morph channel of node '" + m_model.nodes[morph.node].name +
                          "' weighs target " + std::to_string(targets - 1) + " but " + mesh_label(instance.mesh) +
                          " has " + std::to_string(instance.morph_targets.size()) + " morph targets");

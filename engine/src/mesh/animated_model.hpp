@@ -112,6 +112,10 @@ struct AnimatedModel {
     char up_axis = 0;  ///< 'x', 'y' or 'z' when the file says; 0 otherwise
 };
 
+/// Welds `instance` in place (weld.hpp): vertices with equal rest positions, morph target
+/// positions and influences become the first of them; triangles are renumbered, not reordered.
+void weld_instance(MeshInstance& instance);
+
 /// Reads `file` through assimp (no post-processing) into an AnimatedModel: mesh instances with
 /// at least one triangle, welded; clips with keys converted to double. Throws InputError naming
 /// the file and the element: unreadable file, a bone naming no node, NaN or infinite keys,
