@@ -5,14 +5,13 @@
 #include "mesh/morph.hpp"
 #include "mesh/skinning.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include "mesh/vertex_blocks.hpp"
 
 namespace collidescope::animation {
 namespace {
 
 void place(std::span<const Vec3> positions, const Affine& transform, std::span<Vec3> out) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, positions.size(), 8192),
+    for_vertex_blocks(positions.size(), 8192,
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t v = range.begin(); v != range.end(); ++v) out[v] = apply(transform, positions[v]);
     });

@@ -3,8 +3,7 @@
 
 #include "mesh/morph.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include "mesh/vertex_blocks.hpp"
 
 #include <cassert>
 
@@ -13,7 +12,7 @@ namespace collidescope::animation {
 void apply_morph(std::span<const Vec3> base, std::span<const std::vector<Vec3>> targets,
                  std::span<const double> weights, std::span<Vec3> out) {
     assert(weights.size() <= targets.size() && out.size() == base.size());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, base.size(), 4096),
+    for_vertex_blocks(base.size(), 4096,
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t v = range.begin(); v != range.end(); ++v) {
             Vec3 p = base[v];

@@ -3,8 +3,7 @@
 
 #include "mesh/skinning.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include "mesh/vertex_blocks.hpp"
 
 #include <cassert>
 
@@ -13,7 +12,7 @@ namespace collidescope::animation {
 void skin(std::span<const Vec3> positions, const Influences& influences,
           std::span<const Affine> bone_matrices, const Affine& fallback, std::span<Vec3> out) {
     assert(out.size() == positions.size() && influences.begin.size() == positions.size() + 1);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, positions.size(), 8192),
+    for_vertex_blocks(positions.size(), 8192,
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t v = range.begin(); v != range.end(); ++v) {
             const std::uint32_t first = influences.begin[v], last = influences.begin[v + 1];
