@@ -12,8 +12,8 @@ namespace collidescope::testmodels {
 
 inline const std::filesystem::path k_root = "/usr/share/assimp/models";
 
-/// The model's path, or "" after a skip (or a CI failure) when it is not installed.
-/// Use as: `const auto file = testmodels::require("X/BCN_Epileptic.X"); if (file.empty()) return;`
+/// The model's path, or an empty path when it is not installed (REQUIRE_TESTMODEL then skips
+/// the test, or fails it under CI).
 inline std::filesystem::path find(const std::string& relative) {
     const std::filesystem::path file = k_root / relative;
     if (std::filesystem::is_regular_file(file)) return file;
