@@ -75,7 +75,7 @@ int run_check(const CheckOptions& options) {
     if (options.pairs == "-" && options.stats == "-") {
         throw InputError("--pairs and --stats cannot both write to stdout (-)");
     }
-    const Scene scene = open_scene(options.inputs, options.scene);
+    const Scene scene = open_scene(options.inputs, options.scene, options.engine.animation);
     const FrameRange range = parse_frame_range(options.frames, scene.source->frame_count());
     const PipelineConfig config = pipeline_config(options.engine, scene);
     Pipeline pipeline(config);

@@ -1,4 +1,4 @@
-// --method, --self, --no-self, --threads, --gpu-*, --aabb-* -> PipelineConfig.
+// --method, --self, --no-self, --threads, --gpu-*, --aabb-* -> PipelineConfig; --fps, --clip.
 
 #include "engine_cli_options.hpp"
 
@@ -23,6 +23,11 @@ void add_engine_options(CLI::App& command, EngineOptions& options) {
         ->capture_default_str();
     command.add_option("--adaptive-seed", options.adaptive_seed, "Seed of the decision system's exploration draws")
         ->capture_default_str();
+    command.add_option("--fps", options.animation.fps,
+                       "Frames per second at which animated model files are sampled (default 30; docs/animation.md)")
+        ->check(CLI::PositiveNumber);
+    command.add_option("--clip", options.animation.clip,
+                       "Animation clip of animated model files: a name or an index from 0 (default the first)");
     add_gpu_options(command, options.gpu);
     add_aabb_options(command, options.aabb);
 }

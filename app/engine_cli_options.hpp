@@ -1,7 +1,7 @@
 #pragma once
 // The options that choose and tune the engine, shared by the subcommands that run it (check,
 // record): --method, --self / --no-self, --threads, the GPU cull's --gpu-* and the AABB
-// hierarchies' --aabb-* options.
+// hierarchies' --aabb-* options, and the sampling of animated model files (--fps, --clip).
 
 #include "aabb_cli_options.hpp"
 #include "gpu_cli_options.hpp"
@@ -25,6 +25,7 @@ struct EngineOptions {
     AabbCliOptions aabb;
     std::string policy = "cost";  ///< --policy: the decision system's policy (method adaptive)
     std::uint64_t adaptive_seed = 1;  ///< --adaptive-seed: seeds the exploration draws
+    AnimationOptions animation;       ///< --fps, --clip: how animated model files are sampled
 };
 
 /// "thesis" or "cost" -> the policy; throws std::invalid_argument otherwise.

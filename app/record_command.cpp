@@ -124,7 +124,7 @@ int run_record(const RecordOptions& options) {
     // (recorder/src/large_blocks.hpp), which bounds memory without slowing the engine.
     const std::uint32_t depth_every = parse_depth(options.depth);
     const std::uint64_t budget = options.budget.empty() ? 0 : parse_size(options.budget, "--budget");
-    const Scene scene = open_scene(options.inputs, options.scene);
+    const Scene scene = open_scene(options.inputs, options.scene, options.engine.animation);
     const FrameRange range = parse_frame_range(options.frames, scene.source->frame_count());
     PipelineConfig config = pipeline_config(options.engine, scene);
     config.gpu.depth_every = depth_every;

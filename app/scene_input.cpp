@@ -7,7 +7,8 @@
 
 namespace collidescope::app {
 
-Scene open_scene(const std::vector<std::string>& inputs, const std::string& scene) {
+Scene open_scene(const std::vector<std::string>& inputs, const std::string& scene,
+                 const AnimationOptions& animation) {
     if (!scene.empty() && !inputs.empty()) {
         throw InputError("give either INPUT files or --scene, not both");
     }
@@ -15,7 +16,7 @@ Scene open_scene(const std::vector<std::string>& inputs, const std::string& scen
     if (inputs.empty()) {
         throw InputError("no input: give INPUT files (mesh, frame pattern or scene.json) or --scene NAME");
     }
-    return open_inputs(inputs);
+    return open_inputs(inputs, animation);
 }
 
 bool resolve_self_collision(bool self, bool no_self, const Scene& scene) {

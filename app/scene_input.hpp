@@ -11,7 +11,9 @@ namespace collidescope::app {
 
 /// Opens INPUT files (mesh files, frame patterns, scene.json manifests) or the built-in scene
 /// `scene` (NAME[:PRESET]); exactly one of the two must be given. Throws InputError otherwise.
-Scene open_scene(const std::vector<std::string>& inputs, const std::string& scene);
+/// `animation` says how animated model files are sampled.
+Scene open_scene(const std::vector<std::string>& inputs, const std::string& scene,
+                 const AnimationOptions& animation = {});
 
 /// Self-collision for a run: forced on by --self, off by --no-self, else the scene's setting.
 bool resolve_self_collision(bool self, bool no_self, const Scene& scene);

@@ -26,7 +26,8 @@ PACKAGES=(
   # palettegen/paletteuse make the GIF palette), found through pkg-config
   libavcodec-dev libavformat-dev libswscale-dev libavfilter-dev libavutil-dev
   # data: the Stanford bunny (/usr/share/glmark2/models/bunny.obj); real models of every
-  # format assimp reads (/usr/share/assimp/models: the Corpus.AssimpTestmodels tests)
+  # format assimp reads, animated characters among them (/usr/share/assimp/models: the
+  # Corpus.AssimpTestmodels tests and the animation tests)
   glmark2-data assimp-testmodels
   # peers of the aabb method (bench/peers/bench_bvh_peers, built only when present)
   libembree-dev libfcl-dev

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -82,12 +83,23 @@ struct Scene {
 std::shared_ptr<FrameSource> make_memory_source(std::vector<std::string> object_names,
                                                 std::vector<std::vector<MeshData>> frames);
 
+/// How animated model files (glTF, FBX, Collada, .X, ... through assimp) are sampled
+/// (docs/animation.md). Unset members take a manifest's top-level "fps" / "clip", else the
+/// defaults: 30 frames per second, the first clip.
+struct AnimationOptions {
+    std::optional<double> fps;         ///< frames per second; frame k is the pose at k / fps s
+    std::optional<std::string> clip;   ///< a clip's name, or its index (from 0)
+};
+
 /// Opens the command line's inputs as one scene. Each input is a mesh file (static over all
 /// frames), a frame pattern (`cloth.%04d.ply` or `cloth.####.obj`, the consecutive existing
 /// frames from the first match), or a `scene.json` manifest. Objects are numbered in input
 /// order (a manifest contributes its objects in its order). Throws InputError on bad input
 /// (missing files, patterns matching nothing, objects with different frame counts, a
-/// malformed manifest).
-Scene open_inputs(std::span<const std::string> inputs);
+/// malformed manifest). A model file with animation (anything assimp reads but .ply / .obj)
+/// becomes one object per mesh instance, named "<node>/<mesh>", sampled per `animation`; its
+/// frames are 0 .. floor(duration * fps), and it fills the scene's frame_times, fps, clip and
+/// up_axis (docs/animation.md).
+Scene open_inputs(std::span<const std::string> inputs, const AnimationOptions& animation = {});
 
 }  // namespace collidescope

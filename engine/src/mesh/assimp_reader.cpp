@@ -7,10 +7,13 @@
 // apply the node transforms (exactly nothing when they are identity, the usual case), and
 // split polygons into fans ourselves. Points and lines are not triangles and are skipped.
 // Whether vertices are shared is up to each assimp importer (OFF and PLY keep the file's
-// vertices; STL has none to share; OBJ does not, hence our own reader).
+// vertices; STL has none to share; OBJ does not, hence our own reader); within each mesh we
+// then weld vertices at the same position (mesh/weld.hpp), so the seams an importer splits for
+// normals and texture coordinates are not reported as touching neighbours.
 
 #include "mesh/assimp_checks.hpp"
 #include "mesh/fan.hpp"
+#include "mesh/weld.hpp"
 
 #include "collidescope/error.hpp"
 #include "collidescope/mesh.hpp"
@@ -75,10 +78,24 @@ private:
             fail("too many vertices");
         }
         const bool identity = is_identity(transform);
-        for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+        m_welding = weld_by_position(mesh);
+        for (const std::uint32_t v : m_welding.kept) {
             m_mesh.vertices.push_back(transformed(transform, mesh.mVertices[v], identity));
         }
         for (unsigned f = 0; f < mesh.mNumFaces; ++f) append_face(mesh, index, f, offset);
+    }
+
+    // A static mesh is one frame: vertices that coincide there are one vertex.
+    static Welding weld_by_position(const aiMesh& mesh) {
+        WeldKeys keys;
+        keys.values.reserve(3 * std::size_t{mesh.mNumVertices});
+        keys.begin.reserve(std::size_t{mesh.mNumVertices} + 1);
+        for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+            const aiVector3D& p = mesh.mVertices[v];
+            const double key[3] = {p.x, p.y, p.z};
+            keys.add(key);
+        }
+        return weld(keys);
     }
 
     void append_face(const aiMesh& mesh, unsigned mesh_index, unsigned face_index, std::size_t offset) {
@@ -92,7 +109,7 @@ private:
                      ": vertex index " + std::to_string(corner) + " out of range (" +
                      std::to_string(mesh.mNumVertices) + " vertices)");
             }
-            m_corners[c] = static_cast<std::uint32_t>(offset + corner);
+            m_corners[c] = static_cast<std::uint32_t>(offset + m_welding.remap[corner]);
         }
         append_fan(m_corners, m_mesh.triangles);
     }
@@ -101,6 +118,7 @@ private:
     const std::filesystem::path& m_file;
     MeshData m_mesh;
     std::vector<std::uint32_t> m_corners;
+    Welding m_welding;  ///< of the mesh being appended
 };
 
 const aiScene* import_scene(Assimp::Importer& importer, const std::filesystem::path& file) {

@@ -8,6 +8,12 @@
 #include <stdexcept>
 
 namespace collidescope {
+
+std::size_t FileObject::frame_count() const {
+    if (animated) return animated->frame_count();
+    return cache ? cache_frames : files.size();
+}
+
 namespace {
 
 // Revisions are unique across the process, so two objects (or two scenes) never share one
@@ -51,6 +57,10 @@ private:
 
     ObjectFrame object_frame(ObjectState& object, std::uint32_t index) {
         if (object.input.cache) return cached_frame(object, index);
+        if (object.input.animated) {
+            return {object.input.animated->topology(object.input.instance),
+                    object.input.animated->vertices(object.input.instance, index)};
+        }
         if (object.input.is_static) {
             if (!object.topology) {
                 MeshData mesh = read(object, 0, index);

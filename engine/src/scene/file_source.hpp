@@ -9,6 +9,8 @@
 #include "collidescope/point_cache.hpp"
 #include "collidescope/scene.hpp"
 
+#include "scene/animated_file.hpp"
+
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -28,8 +30,12 @@ struct FileObject {
     std::shared_ptr<PointCacheReader> cache;
     std::uint32_t cache_frames = 0;
 
-    /// How many frames the object has (1 for a static mesh).
-    std::size_t frame_count() const { return cache ? cache_frames : files.size(); }
+    /// How many frames the object has (1 for a static mesh; an animated instance: its clip's).
+    std::size_t frame_count() const;
+    /// A mesh instance of an animated model file (files empty, is_static false): its frames
+    /// are posed by `animated`, which the file's other instances share.
+    std::shared_ptr<AnimatedFile> animated;
+    std::uint32_t instance = 0;                ///< the instance within `animated`
 };
 
 /// A FrameSource over `objects` with `frame_count` frames (every sequence object holds at

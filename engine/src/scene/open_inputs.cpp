@@ -9,10 +9,19 @@
 // directory. When "frames" is given the scene uses the first F frames of every sequence or
 // cache (a manifest may describe part of a longer cache); one with fewer than F frames is an
 // error. Without it, the frames found are used.
+//
+// A mesh file that assimp reads with animation (not .ply, .obj or .gz) is an animated model:
+// one object per mesh instance, posed per frame (scene/animated_file.hpp). A manifest may give
+// "fps" (a positive number) and "clip" (a name or an index) at its top level for the animated
+// files it lists; the command line's --fps / --clip win over them. "frames" does not shorten
+// an animated file (use --frames).
 
+#include "scene/animated_file.hpp"
 #include "scene/cached_object.hpp"
 #include "scene/file_source.hpp"
 #include "scene/frame_pattern.hpp"
+
+#include "mesh/animated_model.hpp"
 
 #include "collidescope/error.hpp"
 #include "collidescope/scene.hpp"
@@ -34,7 +43,25 @@ struct SceneInputs {
     std::vector<FileObject> objects;
     std::optional<std::string> manifest_name;
     bool self_collision = false;
+    std::shared_ptr<AnimatedFile> first_animated;  ///< says the scene's fps, clip and frame times
+    char up_axis = 0;                              ///< the first file's that says one
 };
+
+std::string lowercase(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return text;
+}
+
+// Probing imports the file once more than a static mesh needs, so formats that cannot hold an
+// animation (our own readers' PLY and OBJ; STL, OFF) and gzipped files are not probed.
+bool may_be_animated(const std::filesystem::path& path) {
+    const std::string extension = lowercase(path.extension().string());
+    for (const char* still : {".ply", ".obj", ".gz", ".stl", ".off"}) {
+        if (extension == still) return false;
+    }
+    return true;
+}
 
 // A mesh file (static) or a frame pattern (one file per frame), named `name` or after the file.
 FileObject open_object(const std::string& spec, const std::string& name) {
@@ -59,16 +86,42 @@ FileObject open_object(const std::string& spec, const std::string& name) {
     return object;
 }
 
+// An input: an animated model file (one object per mesh instance, named "<node>/<mesh>",
+// prefixed by `name` when one is given) or what open_object makes of it.
+std::vector<FileObject> open_objects(const std::string& spec, const std::string& name,
+                                     const AnimationOptions& animation, SceneInputs& inputs) {
+    const std::filesystem::path path(spec);
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error) || !may_be_animated(path)) return {open_object(spec, name)};
+    animation::AnimatedModel model = animation::read_animated_model(path, /*only_if_animated=*/true);
+    if (inputs.up_axis == 0) inputs.up_axis = model.up_axis;
+    if (model.clips.empty()) return {open_object(spec, name)};
+    auto file = std::make_shared<AnimatedFile>(path, std::move(model), animation);
+    if (!inputs.first_animated) inputs.first_animated = file;
+    std::vector<FileObject> objects;
+    for (std::uint32_t i = 0; i < file->instance_count(); ++i) {
+        FileObject object;
+        object.origin = spec;
+        object.name = (name.empty() ? "" : name + "/") + file->instance_name(i);
+        object.animated = file;
+        object.instance = i;
+        objects.push_back(std::move(object));
+    }
+    return objects;
+}
+
 // Reads a manifest's JSON and checks the keys one by one, naming the first bad one.
 class ManifestReader {
 public:
-    explicit ManifestReader(const std::filesystem::path& file) : m_file(file) {}
+    ManifestReader(const std::filesystem::path& file, const AnimationOptions& animation)
+        : m_file(file), m_animation(animation) {}
 
     void read(SceneInputs& inputs) {
         const json doc = parse();
         if (!doc.is_object()) fail("", "expected a JSON object at the top level");
         const std::optional<std::string> name = optional_string(doc, "name", "name");
         const std::optional<std::uint32_t> frames = optional_frames(doc);
+        read_animation_options(doc);
         if (const json* self = find(doc, "self")) {
             if (!self->is_boolean()) wrong_type("self", "a boolean", *self);
             inputs.self_collision = inputs.self_collision || self->get<bool>();
@@ -76,9 +129,7 @@ public:
         const json* objects = find(doc, "objects");
         if (objects == nullptr) fail("objects", "missing key");
         if (!objects->is_array() || objects->empty()) wrong_type("objects", "a non-empty array", *objects);
-        for (std::size_t i = 0; i < objects->size(); ++i) {
-            inputs.objects.push_back(read_object((*objects)[i], i, frames));
-        }
+        for (std::size_t i = 0; i < objects->size(); ++i) read_object((*objects)[i], i, frames, inputs);
         if (!inputs.manifest_name) inputs.manifest_name = name.value_or(default_name());
     }
 
@@ -124,8 +175,25 @@ private:
         return frames->get<std::uint32_t>();
     }
 
-    FileObject read_object(const json& entry, std::size_t index,
-                           std::optional<std::uint32_t> frames) const {
+    // Top-level "fps" and "clip", where the command line leaves them unset.
+    void read_animation_options(const json& doc) {
+        if (const json* fps = find(doc, "fps"); fps != nullptr && !m_animation.fps) {
+            if (!fps->is_number() || !(fps->get<double>() > 0)) wrong_type("fps", "a positive number", *fps);
+            m_animation.fps = fps->get<double>();
+        }
+        if (const json* clip = find(doc, "clip"); clip != nullptr && !m_animation.clip) {
+            if (clip->is_string()) {
+                m_animation.clip = clip->get<std::string>();
+            } else if (clip->is_number_unsigned()) {
+                m_animation.clip = std::to_string(clip->get<std::uint64_t>());
+            } else {
+                wrong_type("clip", "a clip name or index", *clip);
+            }
+        }
+    }
+
+    void read_object(const json& entry, std::size_t index, std::optional<std::uint32_t> frames,
+                     SceneInputs& inputs) const {
         const std::string path = "objects[" + std::to_string(index) + "]";
         if (!entry.is_object()) wrong_type(path, "an object", entry);
         const std::optional<std::string> pattern = optional_string(entry, "pattern", path + ".pattern");
@@ -136,10 +204,16 @@ private:
         if (cache && !mesh) fail(path + ".cache", "needs \"mesh\": the mesh file whose vertices the cache moves");
         const std::string name = optional_string(entry, "name", path + ".name").value_or("");
         const std::filesystem::path spec = m_file.parent_path() / (pattern ? *pattern : *mesh);
-        FileObject object = cache ? open_cached_object(spec.string(), (m_file.parent_path() / *cache).string(), name)
-                                  : open_object(spec.string(), name);
-        if (frames && !object.is_static) use_frames(object, *frames);
-        return object;
+        if (cache) {
+            FileObject object = open_cached_object(spec.string(), (m_file.parent_path() / *cache).string(), name);
+            if (frames) use_frames(object, *frames);
+            inputs.objects.push_back(std::move(object));
+            return;
+        }
+        for (FileObject& object : open_objects(spec.string(), name, m_animation, inputs)) {
+            if (frames && !object.is_static && !object.animated) use_frames(object, *frames);
+            inputs.objects.push_back(std::move(object));
+        }
     }
 
     void use_frames(FileObject& object, std::uint32_t frames) const {
@@ -161,13 +235,11 @@ private:
     }
 
     std::filesystem::path m_file;
+    AnimationOptions m_animation;  ///< the command line's, completed by the manifest's
 };
 
 bool is_manifest(const std::string& input) {
-    std::string extension = std::filesystem::path(input).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return extension == ".json";
+    return lowercase(std::filesystem::path(input).extension().string()) == ".json";
 }
 
 // The frame count all sequences share (1 when every object is static).
@@ -206,20 +278,30 @@ void take_cache_times(const std::vector<FileObject>& objects, std::uint32_t fram
 std::string scene_name(const SceneInputs& inputs) {
     if (inputs.manifest_name) return *inputs.manifest_name;
     std::string name;
-    for (const FileObject& object : inputs.objects) name += (name.empty() ? "" : "+") + object.name;
+    const AnimatedFile* last_file = nullptr;
+    for (const FileObject& object : inputs.objects) {
+        // An animated file's instances are named once, after the file.
+        if (object.animated && object.animated.get() == last_file) continue;
+        const std::string part = object.animated ? object_name_from(std::filesystem::path(object.origin).filename().string())
+                                                 : object.name;
+        last_file = object.animated.get();
+        name += (name.empty() ? "" : "+") + part;
+    }
     return name;
 }
 
 }  // namespace
 
-Scene open_inputs(std::span<const std::string> inputs) {
+Scene open_inputs(std::span<const std::string> inputs, const AnimationOptions& animation) {
     if (inputs.empty()) throw InputError("no input given (a mesh file, frame pattern or scene.json)");
     SceneInputs collected;
     for (const std::string& input : inputs) {
         if (is_manifest(input)) {
-            ManifestReader(input).read(collected);
+            ManifestReader(input, animation).read(collected);
         } else {
-            collected.objects.push_back(open_object(input, ""));
+            for (FileObject& object : open_objects(input, "", animation, collected)) {
+                collected.objects.push_back(std::move(object));
+            }
         }
     }
     const std::uint32_t frames = common_frame_count(collected.objects);
@@ -227,6 +309,12 @@ Scene open_inputs(std::span<const std::string> inputs) {
     scene.name = scene_name(collected);
     scene.self_collision = collected.self_collision;
     take_cache_times(collected.objects, frames, scene);
+    scene.up_axis = collected.up_axis;
+    if (collected.first_animated) {
+        scene.fps = collected.first_animated->fps();
+        scene.clip = collected.first_animated->clip_name();
+        scene.frame_times = collected.first_animated->frame_times();
+    }
     scene.source = make_file_source(std::move(collected.objects), frames);
     return scene;
 }
