@@ -93,11 +93,4 @@ CameraSpec parse_camera(const std::string& spec) {
     throw InputError(usage);
 }
 
-SheetSelection parse_sheet_selection(const std::string& text) {
-    if (text == "every") return SheetSelection::Every;
-    if (text == "collisions") return SheetSelection::Collisions;
-    if (text == "slowest") return SheetSelection::Slowest;
-    throw InputError("--sheet-frames must be every, collisions or slowest, not '" + text + "'");
-}
-
 }  // namespace collidescope::replays
