@@ -33,7 +33,7 @@ struct BenchOptions {
     std::string frames;                ///< "" = every frame of every scene
     std::string output;
     GpuOptions gpu;
-    AabbCliOptions aabb;
+    AabbOptions aabb;
 };
 
 std::string with_preset(const std::string& scene, const std::string& preset) {
@@ -111,7 +111,7 @@ int run_bench(const BenchOptions& options) {
         const FrameRange range = parse_frame_range(options.frames, scene.source->frame_count());
         plans.push_back({methods_for(options, scene, available), range.begin, range.end, options.repeat,
                          options.threads, scene.self_collision, gpu_config(options.gpu),
-                         aabb_options(options.aabb)});
+                         options.aabb});
         steps += std::uint64_t{range.end - range.begin} * static_cast<std::uint64_t>(options.repeat) *
                  plans.back().methods.size();
         scenes.push_back(std::move(scene));

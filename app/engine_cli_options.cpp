@@ -2,6 +2,7 @@
 
 #include "engine_cli_options.hpp"
 
+#include "named_cli_option.hpp"
 #include "scene_input.hpp"
 
 #include <stdexcept>
@@ -17,10 +18,8 @@ void add_engine_options(CLI::App& command, EngineOptions& options) {
     command.add_option("--threads", options.threads, "Worker threads (0 = all hardware threads)")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
-    command.add_option("--policy", options.policy,
-                       "Decision policy of --method adaptive: thesis (Algorithms 4 and 5) or cost (docs/decision.md)")
-        ->check(CLI::IsMember({"thesis", "cost"}))
-        ->capture_default_str();
+    add_named_option(command, "--policy", options.policy, k_adaptive_policy_names,
+                     "Decision policy of --method adaptive: thesis (Algorithms 4 and 5) or cost (docs/decision.md)");
     command.add_option("--adaptive-seed", options.adaptive_seed, "Seed of the decision system's exploration draws")
         ->capture_default_str();
     command.add_option("--fps", options.animation.fps,
@@ -38,16 +37,10 @@ PipelineConfig pipeline_config(const EngineOptions& options, const Scene& scene)
     config.self_collision = resolve_self_collision(options.self, options.no_self, scene);
     config.threads = options.threads;
     config.gpu = gpu_config(options.gpu);
-    config.aabb = aabb_options(options.aabb);
-    config.adaptive.policy = parse_policy(options.policy);
+    config.aabb = options.aabb;
+    config.adaptive.policy = options.policy;
     config.adaptive.seed = options.adaptive_seed;
     return config;
-}
-
-AdaptivePolicy parse_policy(const std::string& name) {
-    if (name == "thesis") return AdaptivePolicy::Thesis;
-    if (name == "cost") return AdaptivePolicy::Cost;
-    throw std::invalid_argument("unknown policy '" + name + "' (known: thesis, cost)");
 }
 
 }  // namespace collidescope::app

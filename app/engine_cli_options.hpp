@@ -22,14 +22,11 @@ struct EngineOptions {
     bool no_self = false;  ///< force self-collision off
     int threads = 0;       ///< 0 = all hardware threads
     GpuOptions gpu;
-    AabbCliOptions aabb;
-    std::string policy = "cost";  ///< --policy: the decision system's policy (method adaptive)
+    AabbOptions aabb;
+    AdaptivePolicy policy = AdaptiveOptions{}.policy;  ///< --policy (method adaptive)
     std::uint64_t adaptive_seed = 1;  ///< --adaptive-seed: seeds the exploration draws
     AnimationOptions animation;       ///< --fps, --clip: how animated model files are sampled
 };
-
-/// "thesis" or "cost" -> the policy; throws std::invalid_argument otherwise.
-AdaptivePolicy parse_policy(const std::string& name);
 
 /// Adds the options to `command`, writing into `options` (which must outlive parsing).
 void add_engine_options(CLI::App& command, EngineOptions& options);

@@ -2,22 +2,20 @@
 
 #include "gpu_cli_options.hpp"
 
+#include "named_cli_option.hpp"
+
 #include "collidescope/error.hpp"
 
 namespace collidescope::app {
 
 void add_gpu_options(CLI::App& command, GpuOptions& options) {
     const std::string group = "GPU cull (methods gpu, ...)";
-    command.add_option("--gl", options.gl,
-                       "GL context of the GPU cull: auto (a GPU through EGL if any, else OSMesa), osmesa or egl")
-        ->check(CLI::IsMember({"auto", "osmesa", "egl"}))
-        ->capture_default_str()
+    add_named_option(command, "--gl", options.gl, k_gl_backend_names,
+                     "GL context of the GPU cull: auto (a GPU through EGL if any, else OSMesa), osmesa or egl")
         ->group(group);
-    command.add_option("--gpu-cull", options.cull,
-                       "How a pass reads its answers: queries (an occlusion query per P triangles, "
-                       "the thesis) or flags (one draw, per-triangle flags in a storage buffer)")
-        ->check(CLI::IsMember({"queries", "flags"}))
-        ->capture_default_str()
+    add_named_option(command, "--gpu-cull", options.cull, k_gpu_cull_variant_names,
+                     "How a pass reads its answers: queries (an occlusion query per P triangles, "
+                     "the thesis) or flags (one draw, per-triangle flags in a storage buffer)")
         ->group(group);
     command.add_option("--gpu-resolution", options.resolution, "Width and height of each view's depth buffer")
         ->check(CLI::Range(1, 8192))
@@ -43,14 +41,14 @@ void add_gpu_options(CLI::App& command, GpuOptions& options) {
 
 GpuCullConfig gpu_config(const GpuOptions& options) {
     GpuCullConfig config;
-    config.variant = options.cull == "flags" ? GpuCullVariant::Flags : GpuCullVariant::Queries;
+    config.variant = options.cull;
     config.resolution = options.resolution;
     config.triangles_per_query = options.triangles_per_query;
     config.view_matrix = !options.fixed_views;
     config.sort_objects = !options.no_sort;
     config.adaptive_p = !options.fixed_p;
     config.object_level = !options.no_object_level;
-    config.gl = parse_gl_backend(options.gl);
+    config.gl = options.gl;
     config.views.clear();
     for (const char axis : options.views) {
         const std::size_t index = std::string_view("xyz").find(axis);

@@ -14,7 +14,7 @@ namespace collidescope::app {
 
 /// What the options hold as parsed.
 struct GpuOptions {
-    std::string cull = "queries";  ///< queries | flags
+    GpuCullVariant cull = GpuCullConfig{}.variant;
     int resolution = GpuCullConfig{}.resolution;
     std::string views = "zxy";     ///< one to three of x, y, z, in order
     std::uint32_t triangles_per_query = GpuCullConfig{}.triangles_per_query;
@@ -22,7 +22,7 @@ struct GpuOptions {
     bool no_sort = false;      ///< --gpu-no-sort
     bool fixed_p = false;      ///< --gpu-fixed-p: --triangles-per-query stays
     bool no_object_level = false;
-    std::string gl = "auto";   ///< --gl: auto | osmesa | egl
+    GlBackend gl = GpuCullConfig{}.gl;
 };
 
 /// Adds the options to `command`, writing into `options` (which must outlive parsing).

@@ -4,6 +4,7 @@
 #include "commands.hpp"
 #include "frame_range.hpp"
 #include "interrupt.hpp"
+#include "named_cli_option.hpp"
 #include "progress.hpp"
 
 #include "collidescope/error.hpp"
@@ -30,9 +31,9 @@ struct ReplayCliOptions {
     std::string up;                       ///< "" = the recording's up axis, else z
     std::string show = "all";
     int threads = 0;
-    std::string gl = "auto";
+    GlBackend gl = GlBackend::Auto;
     std::string contact_sheet;
-    std::string sheet_frames = "every";
+    replays::SheetSelection sheet_frames = replays::SheetSelection::Every;
     int sheet_count = 12;
     bool diff = false;
     bool quiet = false;
@@ -85,9 +86,9 @@ replays::ReplayOptions replay_options(const ReplayCliOptions& cli) {
     options.layers = replays::parse_layers(cli.show);
     if (cli.threads < 0) throw InputError("--threads must be 0 (all hardware threads) or more");
     options.threads = cli.threads;
-    options.gl = parse_gl_backend(cli.gl);
+    options.gl = cli.gl;
     options.contact_sheet = cli.contact_sheet;
-    options.sheet_selection = replays::parse_sheet_selection(cli.sheet_frames);
+    options.sheet_selection = cli.sheet_frames;
     if (cli.sheet_count < 1) throw InputError("--sheet-count must be at least 1");
     options.sheet_count = cli.sheet_count;
     return options;
@@ -200,14 +201,12 @@ Command add_replay_command(CLI::App& app) {
         ->capture_default_str();
     replay->add_option("--threads", options->threads, "Render threads, each with its own GL context; 0 = all hardware threads")
         ->capture_default_str();
-    replay->add_option("--gl", options->gl,
-                       "GL context: auto (a GPU through EGL if any, else OSMesa), osmesa or egl")
-        ->check(CLI::IsMember({"auto", "osmesa", "egl"}))
-        ->capture_default_str();
+    add_named_option(*replay, "--gl", options->gl, k_gl_backend_names,
+                     "GL context: auto (a GPU through EGL if any, else OSMesa), osmesa or egl");
     replay->add_option("--contact-sheet", options->contact_sheet, "Also write a grid of selected frames to this PNG")
         ->type_name("FILE.png");
-    replay->add_option("--sheet-frames", options->sheet_frames, "Contact sheet frames: every, collisions or slowest")
-        ->capture_default_str();
+    add_named_option(*replay, "--sheet-frames", options->sheet_frames, replays::k_sheet_selection_names,
+                     "Contact sheet frames: every, collisions or slowest");
     replay->add_option("--sheet-count", options->sheet_count, "Frames on the contact sheet, at most")->capture_default_str();
     replay->add_flag("--diff", options->diff, "Compare two recordings side by side, differing pairs highlighted");
     replay->add_flag("-q,--quiet", options->quiet, "No rate line on stderr");

@@ -13,9 +13,9 @@
 //     decides which builder wins as the rebuild of a deforming mesh
 // Only the object level and the method are timed; generating the frames is not.
 
-#include "brute/brute_method.hpp"
-#include "bvh/aabb_method.hpp"
-#include "pipeline/object_level.hpp"
+#include "common/object_level.hpp"
+#include "methods/aabb_method.hpp"
+#include "methods/brute_method.hpp"
 
 #include "collidescope/datasets.hpp"
 
@@ -43,7 +43,7 @@ std::unique_ptr<Method> make_variant(std::int64_t variant) {
         config.policy.quality_limit = -1;  // any quality exceeds it: rebuild every frame
         config.background = bvh::BackgroundMode::Off;
     }
-    return bvh::make_aabb_method(config);
+    return make_aabb_method(config);
 }
 
 std::map<std::int64_t, double>& brute_ms_per_frame() {

@@ -18,9 +18,12 @@ namespace collidescope {
 namespace {
 
 AdaptivePolicy parse_policy(const std::string& name) {
-    if (name == "thesis") return AdaptivePolicy::Thesis;
-    if (name == "cost") return AdaptivePolicy::Cost;
-    throw std::invalid_argument("unknown policy '" + name + "' (known: thesis, cost)");
+    if (const std::optional<AdaptivePolicy> policy = option_value(k_adaptive_policy_names, name)) return *policy;
+    std::string known;
+    for (const OptionName<AdaptivePolicy>& entry : k_adaptive_policy_names) {
+        known += (known.empty() ? "" : ", ") + std::string(entry.name);
+    }
+    throw std::invalid_argument("unknown policy '" + name + "' (known: " + known + ")");
 }
 
 PipelineConfig pipeline_config(const SessionOptions& options) {

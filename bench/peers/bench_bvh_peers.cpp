@@ -7,8 +7,8 @@
 //
 //   build-bvh/bench/bench_bvh_peers [--benchmark_filter=C]
 
-#include "bvh/aabb_method.hpp"
-#include "pipeline/object_level.hpp"
+#include "methods/aabb_method.hpp"
+#include "common/object_level.hpp"
 
 #include "collidescope/datasets.hpp"
 

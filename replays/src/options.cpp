@@ -102,11 +102,4 @@ char parse_up_axis(const std::string& text) {
     throw InputError("--up must be x, y or z, not '" + text + "'");
 }
 
-SheetSelection parse_sheet_selection(const std::string& text) {
-    if (text == "every") return SheetSelection::Every;
-    if (text == "collisions") return SheetSelection::Collisions;
-    if (text == "slowest") return SheetSelection::Slowest;
-    throw InputError("--sheet-frames must be every, collisions or slowest, not '" + text + "'");
-}
-
 }  // namespace collidescope::replays

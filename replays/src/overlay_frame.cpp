@@ -4,6 +4,7 @@
 #include "mesh_renderer.hpp"
 #include "overlay.hpp"
 
+#include "collidescope/adaptive_options.hpp"
 #include "collidescope/stats.hpp"
 
 #include <imgui.h>
@@ -29,6 +30,11 @@ std::string format(const char* pattern, double value) {
     char text[64];
     std::snprintf(text, sizeof text, pattern, value);
     return text;
+}
+
+// The name of a recorded decision's policy (an AdaptivePolicy's value).
+std::string policy_name(double value) {
+    return std::string(option_name(k_adaptive_policy_names, static_cast<AdaptivePolicy>(static_cast<int>(value))));
 }
 
 bool begin_window(const char* name, const Rect& rect) {
@@ -59,7 +65,7 @@ void decision_lines(const FrameData& frame) {
                 format("%.3g ms", value_of(frame.decision, "gpu_ms")).c_str(),
                 format("%.3g ms", value_of(frame.decision, "hybrid_ms")).c_str());
     ImGui::Text("rebuild average %s  (%s policy)", format("%.3g ms", value_of(frame.decision, "rebuild_avg_ms")).c_str(),
-                value_of(frame.decision, "policy") == 1 ? "cost" : "thesis");
+                policy_name(value_of(frame.decision, "policy")).c_str());
     ImGui::Text("exploration %.3f  draw %s", value_of(frame.decision, "exploration"),
                 format("%.3f", value_of(frame.decision, "draw")).c_str());
 }

@@ -4,7 +4,7 @@
 #include "support/brute_reference.hpp"
 #include "support/scene_builders.hpp"
 
-#include "pipeline/object_level.hpp"
+#include "common/object_level.hpp"
 
 #include "collidescope/geometry.hpp"
 #include "collidescope/pipeline.hpp"

@@ -4,7 +4,7 @@
 
 #include "support/scene_builders.hpp"
 
-#include "pipeline/object_level.hpp"
+#include "common/object_level.hpp"
 
 #include <algorithm>
 #include <random>

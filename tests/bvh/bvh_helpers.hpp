@@ -3,7 +3,7 @@
 // coplanar sheets, soups with degenerate triangles), a validating tree hook, and runs of a
 // scene through a pipeline or a configured method.
 
-#include "bvh/aabb_method.hpp"
+#include "methods/aabb_method.hpp"
 #include "bvh/validate_tree.hpp"
 
 #include "collidescope/pipeline.hpp"

@@ -2,8 +2,8 @@
 // small preset, seeded random scenes), the adaptive method's plumbing under a scripted policy
 // (every action, the rebuild in a thread), and determinism with a scripted clock.
 
-#include "decision/adaptive_method.hpp"
-#include "pipeline/object_level.hpp"
+#include "methods/adaptive_method.hpp"
+#include "common/object_level.hpp"
 
 #include "support/brute_reference.hpp"
 #include "support/scene_builders.hpp"
@@ -159,12 +159,12 @@ TEST(Adaptive, RunsEveryActionExactlyAndRebuildsInAThread) {
     const std::size_t steps = script.size();
     std::vector<decision::FrameFacts> facts;
     std::vector<decision::Outcome> outcomes;
-    decision::AdaptiveParts parts;
+    AdaptiveParts parts;
     parts.policy = [&] { return std::make_unique<ScriptedPolicy>(script, facts, outcomes); };
     PipelineConfig config;
     config.self_collision = scene.self_collision;
     Pipeline brute(config);
-    std::unique_ptr<Method> adaptive = decision::make_adaptive_method(config, parts);
+    std::unique_ptr<Method> adaptive = make_adaptive_method(config, parts);
     std::uint32_t background_started = 0;
     for (std::uint32_t f = 0; f < steps; ++f) {
         const Frame frame = scene.source->frame(f);
@@ -192,9 +192,9 @@ TEST(Adaptive, RunsEveryActionExactlyAndRebuildsInAThread) {
 TEST(Adaptive, WithoutGpuRunsAabbAndStaysExact) {
     const Scene scene = make_builtin_scene("B:small");
     PipelineConfig config;
-    decision::AdaptiveParts parts;
+    AdaptiveParts parts;
     parts.without_gpu = true;
-    std::unique_ptr<Method> adaptive = decision::make_adaptive_method(config, parts);
+    std::unique_ptr<Method> adaptive = make_adaptive_method(config, parts);
     Pipeline brute(config);
     for (std::uint32_t f = 0; f < scene.source->frame_count(); f += 5) {
         const Frame frame = scene.source->frame(f);
@@ -213,14 +213,14 @@ TEST(Adaptive, DeterministicWithAScriptedClock) {
         std::vector<std::vector<std::uint8_t>> runs;
         for (int run = 0; run < 2; ++run) {
             double now = 0;
-            decision::AdaptiveParts parts;
+            AdaptiveParts parts;
             parts.clock_ms = [&now] { return now += 0.25; };
             parts.prior = decision::GpuCostPrior{0.5, 0.0001};
             parts.join_rebuilds_next_frame = true;  // the worker's speed must not matter either
             PipelineConfig config;
             config.adaptive.policy = policy;
             config.adaptive.seed = 42;
-            std::unique_ptr<Method> adaptive = decision::make_adaptive_method(config, parts);
+            std::unique_ptr<Method> adaptive = make_adaptive_method(config, parts);
             std::vector<std::uint8_t> actions;
             for (std::uint32_t f = 0; f < 4 * scene.source->frame_count(); ++f) {
                 FrameStats stats;

@@ -2,6 +2,8 @@
 /// Options of the `aabb` method (Mode 1, engine/src/bvh), as the command line and
 /// PipelineConfig carry them. Defaults are the method's defaults.
 
+#include "collidescope/option_names.hpp"
+
 #include <cstdint>
 
 namespace collidescope {
@@ -29,6 +31,15 @@ enum class AabbBackground : std::uint8_t {
     On,   ///< on a worker thread while frames use the refit tree (thesis contribution 3)
     Off,  ///< inside the frame, on the engine thread and its workers
 };
+
+/// The names of AabbBuilder, AabbRebuildRule and AabbBackground (--aabb-builder,
+/// --rebuild-policy, --background-rebuild).
+inline constexpr OptionNames<AabbBuilder, 2> k_aabb_builder_names{
+    {{"lbvh", AabbBuilder::Lbvh}, {"sah", AabbBuilder::Sah}}};
+inline constexpr OptionNames<AabbRebuildRule, 3> k_aabb_rebuild_rule_names{
+    {{"quality", AabbRebuildRule::Quality}, {"thesis", AabbRebuildRule::Thesis}, {"never", AabbRebuildRule::Never}}};
+inline constexpr OptionNames<AabbBackground, 3> k_aabb_background_names{
+    {{"auto", AabbBackground::Auto}, {"on", AabbBackground::On}, {"off", AabbBackground::Off}}};
 
 struct AabbOptions {
     AabbBuilder builder = AabbBuilder::Lbvh;

@@ -1,6 +1,8 @@
 #pragma once
 /// Options of the decision system (method `adaptive`; thesis 4.4; docs/decision.md).
 
+#include "collidescope/option_names.hpp"
+
 #include <cstdint>
 
 namespace collidescope {
@@ -10,6 +12,11 @@ enum class AdaptivePolicy : std::uint8_t {
     Thesis,  ///< Algorithms 4 and 5 of the thesis: Mode 1 (AABB) and Mode 2 (GPU), exploration
     Cost,    ///< ours: per-method cost estimates (aabb, gpu, hybrid), cheapest wins, stale ones re-probed
 };
+
+/// The names of AdaptivePolicy (--policy; the "policy" of check --stats, whose number is the
+/// enumerator's value).
+inline constexpr OptionNames<AdaptivePolicy, 2> k_adaptive_policy_names{
+    {{"thesis", AdaptivePolicy::Thesis}, {"cost", AdaptivePolicy::Cost}}};
 
 /// Options of the `adaptive` method.
 struct AdaptiveOptions {

@@ -3,6 +3,7 @@
 /// thesis 3.2, 4.2; docs/gpu_cull.md).
 
 #include "collidescope/gl_backend.hpp"
+#include "collidescope/option_names.hpp"
 
 #include <array>
 #include <cstdint>
@@ -16,6 +17,10 @@ enum class GpuCullVariant {
     Queries,  ///< one occlusion query per item or batch of triangles (CULLIDE, the thesis)
     Flags,    ///< one draw per object; the fragment shader sets per-triangle flags (query-free)
 };
+
+/// The names of GpuCullVariant (--gpu-cull).
+inline constexpr OptionNames<GpuCullVariant, 2> k_gpu_cull_variant_names{
+    {{"queries", GpuCullVariant::Queries}, {"flags", GpuCullVariant::Flags}}};
 
 /// Options of the GPU cull. The thesis's three mechanisms (4.2) are each switchable.
 struct GpuCullConfig {

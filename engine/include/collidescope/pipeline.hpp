@@ -4,13 +4,12 @@
 
 #include "collidescope/aabb_options.hpp"
 #include "collidescope/adaptive_options.hpp"
+#include "collidescope/frame_context.hpp"
 #include "collidescope/gpu_cull.hpp"
 #include "collidescope/scene.hpp"
 #include "collidescope/stats.hpp"
 #include "collidescope/trace.hpp"
 #include "collidescope/types.hpp"
-
-#include <Eigen/Geometry>
 
 #include <cstdint>
 #include <memory>
@@ -32,25 +31,6 @@ struct PipelineConfig {
     GpuCullConfig gpu;  ///< options of the GPU cull (methods gpu, ...)
     AabbOptions aabb;   ///< options of the AABB hierarchies (method aabb)
     AdaptiveOptions adaptive;  ///< options of the decision system (method adaptive)
-};
-
-/// One object pair whose boxes overlap (a == b for self-collision).
-struct ObjectPair {
-    std::uint32_t a = 0;
-    std::uint32_t b = 0;
-
-    friend auto operator<=>(const ObjectPair&, const ObjectPair&) = default;
-};
-
-/// What a method sees of the frame: the geometry and the update and object level results.
-struct FrameContext {
-    const Frame& frame;
-    /// One closed box per object (over all its vertices), indexed like frame.objects.
-    std::span<const Eigen::AlignedBox3d> object_boxes;
-    /// Object pairs whose boxes overlap (closed: touching counts), sorted, a < b; plus (a, a)
-    /// for every object when self_collision is on.
-    std::span<const ObjectPair> object_pairs;
-    bool self_collision = false;
 };
 
 /// A collision method: culling plus the exact narrow phase. Stateful across frames

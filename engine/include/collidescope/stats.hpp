@@ -164,7 +164,7 @@ inline const char* decision_action_name(std::uint8_t action) {
 /// force, what ran, why, and the inputs the policy judged, as they were when it decided.
 /// Times not measured yet are NaN.
 struct DecisionInfo {
-    std::uint8_t policy = 0;  ///< 0 thesis (Algorithms 4 and 5), 1 cost (docs/decision.md)
+    std::uint8_t policy = 0;  ///< an AdaptivePolicy's value (k_adaptive_policy_names: 0 thesis, 1 cost)
     std::uint8_t mode = 1;    ///< the mode this frame ran in: 1 or 2
     std::uint8_t action = 0;  ///< DecisionAction
     std::uint8_t reason = 0;  ///< DecisionReason

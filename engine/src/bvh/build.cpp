@@ -3,7 +3,7 @@
 
 #include "bvh/build_internal.hpp"
 
-#include "pipeline/stopwatch.hpp"
+#include "common/stopwatch.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

@@ -3,7 +3,8 @@
 //
 // Owns the tree types, the two builders (binned SAH, LBVH), refit, the SAH quality measure
 // and the validator's contract. Knows nothing of frames' object pairs, the narrow phase or
-// threads beyond TBB inside a call: aabb_method.cpp puts the pieces together.
+// threads beyond TBB inside a call: aabb_culler.cpp puts the pieces together, and the `aabb`
+// method (engine/src/methods) adds the narrow phase.
 //
 // Exactness: every box is closed and built from the input coordinates by min/max only, so a
 // node box contains its triangles exactly and a box comparison on doubles is exact.

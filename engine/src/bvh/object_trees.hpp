@@ -1,9 +1,9 @@
 #pragma once
 // The `aabb` method's per-object trees across frames (engine/src/bvh, private): which tree
 // each object has, for which topology, how good it still is, and the stages that keep them
-// valid for a frame (swap, build, refit, policy). aabb_method.cpp calls the stages in order.
+// valid for a frame (swap, build, refit, policy). AabbCuller (aabb_culler.cpp) calls the stages in order.
 
-#include "bvh/aabb_method.hpp"
+#include "bvh/aabb_culler.hpp"
 #include "bvh/background_rebuild.hpp"
 
 #include "collidescope/scene.hpp"

@@ -5,7 +5,7 @@
 
 #include "bvh/bvh.hpp"
 
-#include "pipeline/stopwatch.hpp"
+#include "common/stopwatch.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

@@ -2,9 +2,10 @@
 
 #include "decision/gpu_calibration.hpp"
 
-#include "gpucull/gpu_method.hpp"
-#include "pipeline/object_level.hpp"
-#include "pipeline/stopwatch.hpp"
+#include "common/narrow_phase.hpp"
+#include "common/object_level.hpp"
+#include "common/stopwatch.hpp"
+#include "gpucull/gpu_culler.hpp"
 #include "scene/file_source.hpp"
 
 #include <algorithm>
@@ -36,8 +37,9 @@ ObjectFrame wavy_sheet(std::uint32_t n, double sign, std::uint64_t revision) {
     return sheet;
 }
 
-// Milliseconds of one frame of `method` on two n x n sheets.
-double time_frame(Method& method, std::uint32_t n, std::uint32_t index) {
+// Milliseconds of one frame of the `gpu` method (the cull, then the exact test) on two n x n
+// sheets.
+double time_frame(gpucull::GpuCuller& culler, std::uint32_t n, std::uint32_t index) {
     Frame frame;
     frame.index = index;
     frame.objects.push_back(wavy_sheet(n, 1.0, next_topology_revision()));
@@ -48,17 +50,18 @@ double time_frame(Method& method, std::uint32_t n, std::uint32_t index) {
     std::vector<TrianglePair> found;
     FrameStats stats;
     Stopwatch stopwatch;
-    method.detect(context, found, stats);
+    const std::vector<TrianglePair> candidates = culler.cull(context, stats);
+    narrow_phase(frame, candidates, found, stats);
     return stopwatch.elapsed_ms();
 }
 
 }  // namespace
 
 GpuCostPrior measure_gpu_prior(const GpuCullConfig& config) {
-    std::unique_ptr<Method> method = make_gpu_method(config);
+    gpucull::GpuCuller culler(config);
     constexpr std::uint32_t k_small = 16, k_large = 48;  // 1,024 and 9,216 triangles in all
     std::uint32_t index = 0;
-    const auto frame_ms = [&](std::uint32_t n) { return time_frame(*method, n, index++); };
+    const auto frame_ms = [&](std::uint32_t n) { return time_frame(culler, n, index++); };
     frame_ms(k_small);  // warm up: shaders, buffers
     const double small = frame_ms(k_small);
     frame_ms(k_large);  // warm up: the larger buffers

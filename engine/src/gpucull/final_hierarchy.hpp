@@ -7,7 +7,7 @@
 
 #include "gpucull/image_space_cull.hpp"
 
-#include "collidescope/pipeline.hpp"
+#include "collidescope/frame_context.hpp"
 
 #include <vector>
 

@@ -4,25 +4,18 @@
 
 #include "collidescope/error.hpp"
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 namespace collidescope {
 
-std::string_view gl_backend_name(GlBackend backend) {
-    switch (backend) {
-    case GlBackend::Auto: return "auto";
-    case GlBackend::Osmesa: return "osmesa";
-    case GlBackend::Egl: return "egl";
-    }
-    return "auto";
-}
+std::string_view gl_backend_name(GlBackend backend) { return option_name(k_gl_backend_names, backend); }
 
 GlBackend parse_gl_backend(std::string_view name) {
-    for (const GlBackend backend : {GlBackend::Auto, GlBackend::Osmesa, GlBackend::Egl}) {
-        if (name == gl_backend_name(backend)) return backend;
-    }
-    throw std::invalid_argument("unknown GL backend '" + std::string(name) + "': expected auto, osmesa or egl");
+    if (const std::optional<GlBackend> backend = option_value(k_gl_backend_names, name)) return *backend;
+    throw std::invalid_argument("unknown GL backend '" + std::string(name) + "': expected " +
+                                option_name_list(k_gl_backend_names));
 }
 
 namespace gpucull {

@@ -3,7 +3,7 @@
 
 #include "gpucull/image_space_cull.hpp"
 
-#include "pipeline/stopwatch.hpp"
+#include "common/stopwatch.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -1,9 +1,11 @@
 // The methods `--method` accepts, by name. A new method adds one line to k_methods.
 
-#include "brute/brute_method.hpp"
-#include "bvh/aabb_method.hpp"
-#include "decision/adaptive_method.hpp"
-#include "gpucull/gpu_method.hpp"
+#include "bvh/aabb_culler.hpp"
+#include "methods/aabb_method.hpp"
+#include "methods/adaptive_method.hpp"
+#include "methods/brute_method.hpp"
+#include "methods/gpu_method.hpp"
+#include "methods/hybrid_method.hpp"
 
 #include "collidescope/pipeline.hpp"
 
@@ -34,7 +36,7 @@ struct MethodEntry {
 // In the order method_names() lists them.
 constexpr MethodEntry k_methods[] = {
     {"brute", [](const PipelineConfig&) { return make_brute_method(); }},
-    {"aabb", [](const PipelineConfig& config) { return make_aabb_method(config.aabb, config.threads); }},
+    {"aabb", [](const PipelineConfig& config) { return make_aabb_method(bvh::aabb_config(config.aabb, config.threads)); }},
     {"gpu", [](const PipelineConfig& config) { return make_gpu_method(config.gpu); }},
     {"gpu-naive", [](const PipelineConfig& config) {
          GpuCullConfig naive = config.gpu;
@@ -44,19 +46,22 @@ constexpr MethodEntry k_methods[] = {
     {"aabb-thesis", [](const PipelineConfig& config) -> std::unique_ptr<Method> {  // the thesis's AABB baseline: 5.2.1's 3/4 rule
          AabbOptions thesis = config.aabb;
          thesis.rebuild = AabbRebuildRule::Thesis;
-         return std::make_unique<NamedMethod>("aabb-thesis", make_aabb_method(thesis, config.threads));
+         return std::make_unique<NamedMethod>("aabb-thesis", make_aabb_method(bvh::aabb_config(thesis, config.threads)));
      }},
-    {"hybrid", [](const PipelineConfig& config) { return decision::make_hybrid_method(config); }},
-    {"adaptive", [](const PipelineConfig& config) { return decision::make_adaptive_method(config); }},
+    {"hybrid", [](const PipelineConfig& config) {
+         return make_hybrid_method(std::make_shared<bvh::AabbCuller>(bvh::aabb_config(config.aabb, config.threads)),
+                                   config.gpu);
+     }},
+    {"adaptive", [](const PipelineConfig& config) { return make_adaptive_method(config); }},
     {"adaptive-thesis", [](const PipelineConfig& config) -> std::unique_ptr<Method> {
          PipelineConfig thesis = config;
          thesis.adaptive.policy = AdaptivePolicy::Thesis;
-         return std::make_unique<NamedMethod>("adaptive-thesis", decision::make_adaptive_method(thesis));
+         return std::make_unique<NamedMethod>("adaptive-thesis", make_adaptive_method(thesis));
      }},
     {"adaptive-cost", [](const PipelineConfig& config) -> std::unique_ptr<Method> {
          PipelineConfig cost = config;
          cost.adaptive.policy = AdaptivePolicy::Cost;
-         return std::make_unique<NamedMethod>("adaptive-cost", decision::make_adaptive_method(cost));
+         return std::make_unique<NamedMethod>("adaptive-cost", make_adaptive_method(cost));
      }},
 };
 

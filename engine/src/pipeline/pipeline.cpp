@@ -2,8 +2,8 @@
 
 #include "collidescope/pipeline.hpp"
 
-#include "pipeline/object_level.hpp"
-#include "pipeline/stopwatch.hpp"
+#include "common/object_level.hpp"
+#include "common/stopwatch.hpp"
 
 #include <tbb/global_control.h>
 

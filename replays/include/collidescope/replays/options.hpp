@@ -2,6 +2,7 @@
 /// Options of the replayer (docs/replay.md): what a frame shows, the camera, the image size.
 
 #include "collidescope/gl_backend.hpp"
+#include "collidescope/option_names.hpp"
 
 #include <array>
 #include <cstdint>
@@ -61,8 +62,11 @@ enum class SheetSelection {
     Slowest,     ///< the frames with the largest total time, in frame order
 };
 
-/// Parses `every`, `collisions` or `slowest`. Throws InputError naming the text.
-SheetSelection parse_sheet_selection(const std::string& text);
+/// The names of SheetSelection (--sheet-frames).
+inline constexpr OptionNames<SheetSelection, 3> k_sheet_selection_names{
+    {{"every", SheetSelection::Every},
+     {"collisions", SheetSelection::Collisions},
+     {"slowest", SheetSelection::Slowest}}};
 
 /// Options of one replay.
 struct ReplayOptions {

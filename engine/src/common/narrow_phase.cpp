@@ -1,8 +1,8 @@
 // The narrow phase over candidate pairs, in parallel.
 
-#include "pipeline/narrow_phase.hpp"
+#include "common/narrow_phase.hpp"
 
-#include "pipeline/stopwatch.hpp"
+#include "common/stopwatch.hpp"
 
 #include "collidescope/geometry.hpp"
 

@@ -1,15 +1,16 @@
 #pragma once
-// The `aabb` method (Mode 1, thesis 4.4.1): per-object hierarchies, built when an object
-// first appears or its topology changes, refit every frame, rebuilt by the rebuild policy
-// (on the engine thread or a worker); tree-vs-tree and self traversal give candidate pairs
-// for the shared exact narrow phase.
+// Mode 1's culling (thesis 4.4.1; engine/src/bvh, private): per-object hierarchies, built when
+// an object first appears or its topology changes, refit every frame, rebuilt by the rebuild
+// policy (on the engine thread or a worker); tree-vs-tree and self traversal give candidate
+// pairs. No narrow phase: the methods (engine/src/methods) add it.
 
 #include "bvh/bvh.hpp"
 #include "bvh/rebuild_policy.hpp"
 #include "bvh/traverse.hpp"
 
 #include "collidescope/aabb_options.hpp"
-#include "collidescope/pipeline.hpp"
+#include "collidescope/frame_context.hpp"
+#include "collidescope/stats.hpp"
 
 #include <functional>
 #include <memory>
@@ -37,7 +38,7 @@ struct TreeEvent {
     std::span<const Vec3> vertices;
 };
 
-/// Options of the `aabb` method.
+/// Options of the AABB culling (the `aabb` method's, and the trees `hybrid` and `adaptive` share).
 struct AabbConfig {
     BuildConfig build;            ///< builder (LBVH by default), leaf size, grains
     RebuildPolicyConfig policy;   ///< the quality rule by default
@@ -53,9 +54,9 @@ struct AabbConfig {
 
 class ObjectTrees;
 
-/// Mode 1's culling without the narrow phase: the per-object trees kept across frames and the
-/// traversal. The `aabb` method is this plus the narrow phase; `hybrid` and `adaptive` share
-/// one with the methods they run, so the trees stay warm whichever of them serves a frame.
+/// Mode 1's culling: the per-object trees kept across frames and the traversal. The `aabb`
+/// method is this plus the narrow phase; `hybrid` and `adaptive` share one with the methods
+/// they run, so the trees stay warm whichever of them serves a frame.
 class AabbCuller {
 public:
     explicit AabbCuller(AabbConfig config);
@@ -100,9 +101,6 @@ private:
     double m_last_detection_ms = 0;
 };
 
-/// Makes the `aabb` method.
-std::unique_ptr<Method> make_aabb_method(AabbConfig config);
-
 /// Whether rebuilds run on the worker thread under `mode` when frames use `threads` worker
 /// threads (PipelineConfig::threads, 0 = all): AabbBackground::Auto is on only below TBB's
 /// default concurrency (the hardware threads this process may use).
@@ -113,12 +111,3 @@ bool rebuild_in_background(AabbBackground mode, int threads);
 AabbConfig aabb_config(const AabbOptions& options, int threads);
 
 }  // namespace collidescope::bvh
-
-namespace collidescope {
-
-/// Makes the `aabb` method with the default configuration.
-std::unique_ptr<Method> make_aabb_method();
-/// Makes the `aabb` method as `options` say (the registry's entry).
-std::unique_ptr<Method> make_aabb_method(const AabbOptions& options, int threads);
-
-}  // namespace collidescope

@@ -2,6 +2,8 @@
 
 #include "collidescope/stats_json.hpp"
 
+#include "collidescope/adaptive_options.hpp"
+
 #include <nlohmann/json.hpp>
 
 namespace collidescope {
@@ -57,7 +59,7 @@ nlohmann::ordered_json hybrid_json(const HybridFrameInfo& info) {
 nlohmann::ordered_json decision_json(const DecisionInfo& decision) {
     nlohmann::ordered_json json;
     for_each_decision_value(decision, [&](const char* name, double value, const char*) { json[name] = value; });
-    json["policy"] = decision.policy == 0 ? "thesis" : "cost";
+    json["policy"] = option_name(k_adaptive_policy_names, static_cast<AdaptivePolicy>(decision.policy));
     json["action"] = decision_action_name(decision.action);
     json["reason"] = decision_reason_name(decision.reason);
     return json;

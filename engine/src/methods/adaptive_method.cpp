@@ -1,12 +1,12 @@
 // The adaptive method's frame: facts, decision, run, outcome, trace.
 
-#include "decision/adaptive_method.hpp"
+#include "methods/adaptive_method.hpp"
 
-#include "bvh/aabb_method.hpp"
+#include "bvh/aabb_culler.hpp"
 #include "decision/gpu_calibration.hpp"
-#include "gpucull/gpu_method.hpp"
-#include "hybrid/hybrid_method.hpp"
-#include "pipeline/narrow_phase.hpp"
+#include "methods/aabb_method.hpp"
+#include "methods/gpu_method.hpp"
+#include "methods/hybrid_method.hpp"
 
 #include "collidescope/error.hpp"
 
@@ -14,29 +14,14 @@
 #include <chrono>
 #include <random>
 
-namespace collidescope::decision {
+namespace collidescope {
 namespace {
+
+using namespace decision;
 
 double steady_ms() {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
-
-// Mode 1 over the shared trees: cull, then the exact test.
-class SharedAabbMethod final : public Method {
-public:
-    explicit SharedAabbMethod(std::shared_ptr<bvh::AabbCuller> culler) : m_culler(std::move(culler)) {}
-    std::string_view name() const override { return "aabb"; }
-    void detect(const FrameContext& context, std::vector<TrianglePair>& pairs, FrameStats& stats) override {
-        std::vector<TrianglePair> candidates;
-        const bvh::TraversalStats traversal = m_culler->cull(context, candidates, stats);
-        const double before = m_culler->now();
-        narrow_phase(context.frame, candidates, pairs, stats);
-        m_culler->set_detection_ms(traversal.ms + (m_culler->now() - before));
-    }
-
-private:
-    std::shared_ptr<bvh::AabbCuller> m_culler;
-};
 
 // Triangles of the objects in inter-object pairs.
 std::uint64_t pcs_triangles(const FrameContext& context) {
@@ -64,7 +49,7 @@ public:
     AdaptiveMethod(const PipelineConfig& config, AdaptiveParts parts)
         : m_clock(parts.clock_ms ? std::move(parts.clock_ms) : std::function<double()>(&steady_ms)),
           m_culler(std::make_shared<bvh::AabbCuller>(culler_config(config, m_clock, parts.join_rebuilds_next_frame))),
-          m_aabb(std::make_unique<SharedAabbMethod>(m_culler)) {
+          m_aabb(make_aabb_method(m_culler)) {
         if (!parts.without_gpu) make_gpu_methods(config);
         if (!parts.uniform) {
             parts.uniform = [random = std::mt19937_64(config.adaptive.seed)]() mutable {
@@ -145,7 +130,7 @@ private:
             plain.adaptive_p = false;
             m_gpu_plain = make_gpu_method(plain);
             m_gpu_improved = make_gpu_method(config.gpu);
-            m_hybrid = hybrid::make_hybrid_method(m_culler, config.gpu);
+            m_hybrid = make_hybrid_method(m_culler, config.gpu);
         } catch (const UnavailableError&) {
             m_gpu_plain.reset();
             m_gpu_improved.reset();
@@ -187,8 +172,4 @@ std::unique_ptr<Method> make_adaptive_method(const PipelineConfig& config, Adapt
     return std::make_unique<AdaptiveMethod>(config, std::move(parts));
 }
 
-std::unique_ptr<Method> make_hybrid_method(const PipelineConfig& config) {
-    return hybrid::make_hybrid_method(std::make_shared<bvh::AabbCuller>(bvh::aabb_config(config.aabb, config.threads)), config.gpu);
-}
-
-}  // namespace collidescope::decision
+}  // namespace collidescope

@@ -1,5 +1,5 @@
 #pragma once
-// Wall-clock stage timing for the stats (engine/src/pipeline, private).
+// Wall-clock stage timing for the stats (engine/src/common, private).
 //
 // std::chrono::steady_clock: monotonic, so a clock adjustment never yields a negative stage.
 

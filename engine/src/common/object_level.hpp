@@ -1,10 +1,10 @@
 #pragma once
 // The update stage's object boxes and the object level's sweep and prune
-// (engine/src/pipeline, private; DESIGN.md "The engine, per frame", steps 1 and 2).
+// (engine/src/common, private; DESIGN.md "The engine, per frame", steps 1 and 2).
 //
 // Boxes are closed: two boxes that only touch overlap, because touching triangles collide.
 
-#include "collidescope/pipeline.hpp"
+#include "collidescope/frame_context.hpp"
 #include "collidescope/scene.hpp"
 
 #include <Eigen/Geometry>

@@ -1,9 +1,8 @@
-// The `aabb` method's frame: trees (swap, build, refit, policy), traversal, narrow phase.
+// Mode 1's frame: trees (swap, build, refit, policy), then the traversal.
 
-#include "bvh/aabb_method.hpp"
+#include "bvh/aabb_culler.hpp"
 
 #include "bvh/object_trees.hpp"
-#include "pipeline/narrow_phase.hpp"
 
 #include <tbb/info.h>
 
@@ -40,24 +39,6 @@ std::vector<WorkItem> roots(const FrameContext& context, const ObjectTrees& tree
     }
     return items;
 }
-
-class AabbMethod final : public Method {
-public:
-    explicit AabbMethod(AabbConfig config) : m_culler(std::move(config)) {}
-
-    std::string_view name() const override { return "aabb"; }
-
-    void detect(const FrameContext& context, std::vector<TrianglePair>& pairs, FrameStats& stats) override {
-        std::vector<TrianglePair> candidates;
-        const TraversalStats traversal = m_culler.cull(context, candidates, stats);
-        const double before = m_culler.now();
-        narrow_phase(context.frame, candidates, pairs, stats);
-        m_culler.set_detection_ms(traversal.ms + (m_culler.now() - before));
-    }
-
-private:
-    AabbCuller m_culler;
-};
 
 }  // namespace
 
@@ -137,10 +118,6 @@ bool AabbCuller::rebuild_finished() const {
     return m_trees->rebuild_finished();
 }
 
-std::unique_ptr<Method> make_aabb_method(AabbConfig config) {
-    return std::make_unique<AabbMethod>(std::move(config));
-}
-
 bool rebuild_in_background(AabbBackground mode, int threads) {
     if (mode != AabbBackground::Auto) return mode == AabbBackground::On;
     return threads > 0 && threads < tbb::info::default_concurrency();
@@ -157,13 +134,3 @@ AabbConfig aabb_config(const AabbOptions& options, int threads) {
 }
 
 }  // namespace collidescope::bvh
-
-namespace collidescope {
-
-std::unique_ptr<Method> make_aabb_method() { return bvh::make_aabb_method(bvh::AabbConfig{}); }
-
-std::unique_ptr<Method> make_aabb_method(const AabbOptions& options, int threads) {
-    return bvh::make_aabb_method(bvh::aabb_config(options, threads));
-}
-
-}  // namespace collidescope

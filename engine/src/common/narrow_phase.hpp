@@ -1,5 +1,5 @@
 #pragma once
-// The narrow phase: the exact triangle-triangle test on candidate pairs (engine/src/pipeline,
+// The narrow phase: the exact triangle-triangle test on candidate pairs (engine/src/common,
 // private; DESIGN.md "The engine, per frame", step 4). Every method ends with it.
 
 #include "collidescope/scene.hpp"

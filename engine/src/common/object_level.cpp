@@ -1,6 +1,6 @@
 // Object boxes and the sweep and prune over them.
 
-#include "pipeline/object_level.hpp"
+#include "common/object_level.hpp"
 
 #include <algorithm>
 

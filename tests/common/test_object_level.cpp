@@ -1,7 +1,7 @@
 // The object level: sweep and prune against every object pair, on random boxes snapped to a
 // coarse grid (so boxes often touch exactly, share faces or are flat).
 
-#include "pipeline/object_level.hpp"
+#include "common/object_level.hpp"
 
 #include "support/scene_builders.hpp"
 
