@@ -2,6 +2,7 @@
 // every error into one line on stderr and exit code 2 (the library never prints or exits).
 
 #include "commands.hpp"
+#include "ranks.hpp"
 
 #include "collidescope/error.hpp"
 
@@ -25,7 +26,7 @@ int print_error(std::string message) {
     for (char& c : message) {
         if (c == '\n' || c == '\r') c = ' ';
     }
-    std::cerr << "collidescope: error: " << message << '\n';
+    std::cerr << "collidescope: error: " << collidescope::app::ranks::error_prefix() << message << '\n';
     return k_exit_error;
 }
 
@@ -35,9 +36,7 @@ int handle_parse_error(const CLI::App& app, const CLI::ParseError& error) {
     return print_error(std::string(error.what()) + " (see --help)");
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
     CLI::App app("Collision detection between deforming triangle meshes, with recorded "
                  "sessions and offscreen debug images.", "collidescope");
     app.set_version_flag("--version", version_line(), "Print the version and git revision");
@@ -48,6 +47,7 @@ int main(int argc, char** argv) {
         collidescope::app::add_inspect_command(app),
         collidescope::app::add_validate_command(app),
         collidescope::app::add_compare_command(app),
+        collidescope::app::add_join_command(app),
         collidescope::app::add_replay_command(app),
         collidescope::app::add_export_command(app),
         collidescope::app::add_bench_command(app),
@@ -69,4 +69,13 @@ int main(int argc, char** argv) {
     } catch (const std::exception& error) {
         return print_error(error.what());
     }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    // Under mpirun each rank runs the command on its block of frames; rank 0 assembles the
+    // outputs (ranks.hpp). Serially this is just run().
+    collidescope::app::ranks::Session ranks(argc, argv);
+    return ranks.finish(run(argc, argv));
 }
