@@ -59,7 +59,12 @@ int run(int argc, char** argv) {
     }
     try {
         for (const collidescope::app::Command& command : commands) {
-            if (command.parser->parsed()) return command.run();
+            if (!command.parser->parsed()) continue;
+            const std::string name = command.parser->get_name();
+            if (collidescope::app::ranks::parallel() && name != "check" && name != "record") {
+                return print_error(name + " does not run frame-parallel: run it without mpirun (check and record do)");
+            }
+            return command.run();
         }
         return print_error("no subcommand given (see --help)");
     } catch (const collidescope::InputError& error) {

@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <vector>
 
 namespace collidescope::app::ranks {
@@ -85,21 +86,38 @@ void receive_into(std::ostream& out, int source, int tag) {
     }
 }
 
-// Rank 0: the output in rank order, complete (renamed to its name) only when every rank was.
-void assemble_text(const TextOutput& text, int tag, bool complete) {
-    OutputStream out(text.target);
-    {
-        std::string path = text.local;
-        if (!std::filesystem::exists(path)) path = OutputStream::partial_name(text.local);
-        std::ifstream in(path, std::ios::binary);
-        out.stream() << in.rdbuf();
+// Appends a file to `out` (an empty file adds nothing: no failbit, unlike `out << rdbuf`).
+void append_file(const std::string& path, std::ostream& out) {
+    std::ifstream in(path, std::ios::binary);
+    std::vector<char> buffer(k_chunk_bytes);
+    while (in) {
+        in.read(buffer.data(), k_chunk_bytes);
+        if (in.gcount() > 0) out.write(buffer.data(), in.gcount());
     }
+}
+
+// Rank 0: the output in rank order, complete (renamed to its name) only when every rank was.
+// Every rank's data is received whatever fails, so that no rank waits forever on its send.
+void assemble_text(const TextOutput& text, int tag, bool complete) {
+    std::optional<OutputStream> out;
+    std::string failure;
+    try {
+        out.emplace(text.target);
+    } catch (const std::exception& error) {
+        failure = error.what();
+    }
+    std::ostream discard(nullptr);
+    std::ostream& sink = out ? out->stream() : discard;
+    std::string local = text.local;
+    if (!std::filesystem::exists(local)) local = OutputStream::partial_name(text.local);
+    append_file(local, sink);
     std::error_code error;
     std::filesystem::remove(text.local, error);
     std::filesystem::remove(OutputStream::partial_name(text.local), error);
-    for (int source = 1; source < g_state.size; ++source) receive_into(out.stream(), source, tag);
-    if (complete) out.finish();
-    else out.finish_partial();
+    for (int source = 1; source < g_state.size; ++source) receive_into(sink, source, tag);
+    if (!failure.empty()) throw InputError(failure);
+    if (complete) out->finish();
+    else out->finish_partial();
 }
 
 int combine(const std::vector<int>& codes) {
@@ -184,10 +202,6 @@ int Session::finish(int code) {
                 } catch (const std::exception& error) {
                     print_line("error: " + std::string(error.what()));
                     combined = 2;
-                    for (int source = 1; source < g_state.size; ++source) {
-                        std::ofstream sink("/dev/null");
-                        receive_into(sink, source, i);
-                    }
                 }
             } else {
                 send_file(text.local, i);
