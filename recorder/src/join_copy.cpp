@@ -2,7 +2,10 @@
 
 #include "join_copy.hpp"
 
+#include "chunk_codec.hpp"
+
 #include <algorithm>
+#include <span>
 
 namespace collidescope::recorder::join {
 namespace {
@@ -88,58 +91,115 @@ void write_attribute(const h5::Where& where, hid_t object, const Attribute& attr
                 "cannot write attribute " + attribute.name);
 }
 
-CopyCount copy_rows(const h5::Where& source_where, hid_t source, const h5::Where& target_where, hid_t target,
-                    const std::string& path, hsize_t first, hsize_t rows, hsize_t at, bool last) {
-    CopyCount count;
-    if (rows == 0) return count;
-    const Layout layout = layout_of(source_where, source, path);
+RowAppender::RowAppender(const h5::Where& where, hid_t target, std::string path)
+    : m_where(where), m_target(target), m_path(std::move(path)) {
+    const Layout layout = layout_of(where, target, m_path);
+    m_type = where.own(H5Dget_type(target), H5Tclose, "cannot read the type of " + m_path);
+    m_dcpl = where.own(H5Dget_create_plist(target), H5Pclose, "cannot read the layout of " + m_path);
+    m_element_bytes = H5Tget_size(m_type.get());
+    m_row_bytes = m_element_bytes * layout.dims[1];
+    m_chunk = chunk_rows_of(m_dcpl.get());
+    hsize_t chunk[2] = {0, 0};
+    const bool whole_rows = m_chunk > 0 && (layout.rank == 1 || (H5Pget_chunk(m_dcpl.get(), 2, chunk) == 2 && chunk[1] == layout.dims[1]));
+    if (!whole_rows) return;  // HDF5's writes
+    const int filters = H5Pget_nfilters(m_dcpl.get());
+    if (filters == 0) {
+        m_encoding = Encoding::none;
+    } else if (filters == 2) {
+        unsigned flags = 0, values[8] = {};
+        std::size_t count = 8;
+        const H5Z_filter_t first = H5Pget_filter2(m_dcpl.get(), 0, &flags, &count, values, 0, nullptr, nullptr);
+        count = 8;
+        const H5Z_filter_t second = H5Pget_filter2(m_dcpl.get(), 1, &flags, &count, values, 0, nullptr, nullptr);
+        if (first == H5Z_FILTER_SHUFFLE && second == H5Z_FILTER_DEFLATE && count >= 1 && values[0] >= 1 && values[0] <= 9) {
+            m_encoding = Encoding::shuffle_deflate;
+            m_level = static_cast<int>(values[0]);
+        }
+    }
+}
+
+hsize_t RowAppender::copy_raw_chunks(const h5::Where& source_where, hid_t source, hsize_t first, hsize_t rows, bool last) {
+    const h5::Id source_dcpl = source_where.own(H5Dget_create_plist(source), H5Pclose, "cannot read the layout of " + m_path);
+    if (m_chunk == 0 || !m_pending.empty() || first % m_chunk != 0 || m_rows % m_chunk != 0 ||
+        H5Pequal(source_dcpl.get(), m_dcpl.get()) <= 0) {
+        return 0;
+    }
+    std::vector<unsigned char> buffer;
+    hsize_t done = 0;
+    for (; done < rows && (done + m_chunk <= rows || last); done += m_chunk) {
+        const hsize_t from[2] = {first + done, 0};
+        const hsize_t to[2] = {m_rows + done, 0};
+        hsize_t bytes = 0;
+        // An unallocated chunk reads as the fill value in both files: nothing to copy.
+        if (H5Dget_chunk_storage_size(source, from, &bytes) < 0 || bytes == 0) continue;
+        buffer.resize(bytes);
+        std::uint32_t filters = 0;
+        source_where.check(H5Dread_chunk(source, H5P_DEFAULT, from, &filters, buffer.data()),
+                           "cannot read a chunk of " + m_path + " (corrupt or truncated file?)");
+        m_where.check(H5Dwrite_chunk(m_target, H5P_DEFAULT, filters, to, bytes, buffer.data()),
+                      "cannot write a chunk of " + m_path);
+        ++m_count.raw_chunks;
+        m_count.raw_bytes += bytes;
+    }
+    return std::min(done, rows);
+}
+
+void RowAppender::append(const h5::Where& source_where, hid_t source, hsize_t first, hsize_t rows, bool last) {
+    if (rows == 0) return;
+    const Layout layout = layout_of(source_where, source, m_path);
     if (first + rows > layout.dims[0]) {
-        source_where.fail(path + ": " + std::to_string(first + rows) + " rows needed, " +
+        source_where.fail(m_path + ": " + std::to_string(first + rows) + " rows needed, " +
                           std::to_string(layout.dims[0]) + " present");
     }
-    h5::extend(target_where, target, path, at + rows);
-
-    const h5::Id source_dcpl = source_where.own(H5Dget_create_plist(source), H5Pclose, "cannot read the layout of " + path);
-    const h5::Id target_dcpl = target_where.own(H5Dget_create_plist(target), H5Pclose, "cannot read the layout of " + path);
-    const hsize_t chunk = chunk_rows_of(target_dcpl.get());
-    hsize_t done = 0;
-    if (chunk > 0 && first % chunk == 0 && at % chunk == 0 && H5Pequal(source_dcpl.get(), target_dcpl.get()) > 0) {
-        std::vector<unsigned char> buffer;
-        for (; done < rows && (done + chunk <= rows || last); done += chunk) {
-            const hsize_t from[2] = {first + done, 0};
-            const hsize_t to[2] = {at + done, 0};
-            hsize_t bytes = 0;
-            // An unallocated chunk reads as the fill value in both files: nothing to copy.
-            if (H5Dget_chunk_storage_size(source, from, &bytes) < 0 || bytes == 0) continue;
-            buffer.resize(bytes);
-            std::uint32_t filters = 0;
-            source_where.check(H5Dread_chunk(source, H5P_DEFAULT, from, &filters, buffer.data()),
-                               "cannot read a chunk of " + path + " (corrupt or truncated file?)");
-            target_where.check(H5Dwrite_chunk(target, H5P_DEFAULT, filters, to, bytes, buffer.data()),
-                               "cannot write a chunk of " + path);
-            ++count.raw_chunks;
-            count.raw_bytes += bytes;
-        }
-        done = std::min(done, rows);
-    }
-    if (done == rows) return count;
-
-    // The rest through HDF5 (decoded and encoded again), in blocks of whole target chunks of
-    // about 32 MiB, read and written in the file's own type (no conversion).
-    const h5::Id type = source_where.own(H5Dget_type(source), H5Tclose, "cannot read the type of " + path);
-    const std::size_t row_bytes = H5Tget_size(type.get()) * layout.dims[1];
-    const hsize_t unit = std::max<hsize_t>(chunk, 1);
-    const hsize_t block = std::max<hsize_t>(unit, (hsize_t{32} << 20) / std::max<std::size_t>(row_bytes, 1) / unit * unit);
+    h5::extend(m_where, m_target, m_path, m_rows + rows);
+    const hsize_t raw = copy_raw_chunks(source_where, source, first, rows, last);
+    m_rows += raw;
+    // The rest read through HDF5 (decoded), in blocks of whole target chunks of about 32 MiB,
+    // in the file's own type (no conversion).
+    const hsize_t unit = std::max<hsize_t>(m_chunk, 1);
+    const hsize_t block = std::max<hsize_t>(unit, (hsize_t{32} << 20) / std::max<std::size_t>(m_row_bytes, 1) / unit * unit);
     std::vector<unsigned char> buffer;
-    for (hsize_t row = done; row < rows;) {
+    for (hsize_t row = raw; row < rows;) {
         const hsize_t n = std::min(block, rows - row);
-        buffer.resize(n * row_bytes);
-        h5::read_rows(source_where, source, path, type.get(), first + row, n, buffer.data());
-        h5::write_rows(target_where, target, path, at + row, type.get(), n, buffer.data());
-        count.rewritten_rows += n;
+        buffer.resize(n * m_row_bytes);
+        h5::read_rows(source_where, source, m_path, m_type.get(), first + row, n, buffer.data());
+        m_count.rewritten_rows += n;
+        if (m_encoding == Encoding::hdf5) {
+            h5::write_rows(m_where, m_target, m_path, m_rows, m_type.get(), n, buffer.data());
+            m_rows += n;
+        } else {
+            // Into the chunk being filled; each chunk written once, when full.
+            const std::size_t chunk_bytes = m_chunk * m_row_bytes;
+            for (std::size_t at = 0; at < buffer.size();) {
+                const std::size_t take = std::min(chunk_bytes - m_pending.size(), buffer.size() - at);
+                m_pending.insert(m_pending.end(), buffer.begin() + static_cast<std::ptrdiff_t>(at),
+                                 buffer.begin() + static_cast<std::ptrdiff_t>(at + take));
+                at += take;
+                m_rows += take / m_row_bytes;
+                if (m_pending.size() == chunk_bytes) write_pending();
+            }
+        }
         row += n;
     }
-    return count;
 }
+
+void RowAppender::write_pending() {
+    if (m_pending.empty()) return;
+    const std::size_t chunk_bytes = m_chunk * m_row_bytes;
+    const hsize_t pending_rows = m_pending.size() / m_row_bytes;
+    const hsize_t offset[2] = {m_rows - pending_rows, 0};
+    if (m_encoding == Encoding::shuffle_deflate) {
+        encode_shuffle_deflate(std::as_bytes(std::span<const unsigned char>(m_pending)), m_element_bytes, m_level, m_encoded,
+                               chunk_bytes);
+    } else {
+        m_encoded.assign(m_pending.begin(), m_pending.end());
+        m_encoded.resize(chunk_bytes, 0);
+    }
+    m_where.check(H5Dwrite_chunk(m_target, H5P_DEFAULT, 0, offset, m_encoded.size(), m_encoded.data()),
+                  "cannot write a chunk of " + m_path);
+    m_pending.clear();
+}
+
+void RowAppender::finish() { write_pending(); }
 
 }  // namespace collidescope::recorder::join

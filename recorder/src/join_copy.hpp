@@ -35,11 +35,43 @@ struct CopyCount {
     std::uint64_t rewritten_rows = 0;
 };
 
-/// Rows [first, first + rows) of `source` (an extensible dataset) to rows [at, at + rows) of
-/// `target` (extended to at + rows). Where both start on a chunk boundary and the two datasets
-/// have the same creation properties (chunk shape, filters), whole chunks are copied raw;
-/// `last` lets the final, partly filled chunk go raw too (nothing is appended after it).
-CopyCount copy_rows(const h5::Where& source_where, hid_t source, const h5::Where& target_where, hid_t target,
-                    const std::string& path, hsize_t first, hsize_t rows, hsize_t at, bool last);
+/// Appends rows of part datasets, in order, to one extensible chunked dataset of the output,
+/// writing whole chunks itself: chunks of a part that line up with the output's are copied raw
+/// (H5Dread_chunk / H5Dwrite_chunk, still compressed); other rows are read through HDF5 and
+/// gathered into the output's chunks, each encoded once when full (or at the end) with the
+/// recorder's own shuffle + deflate encoder (chunk_codec.hpp) or stored as is when the dataset
+/// is not filtered. A dataset with another filter pipeline or chunk shape goes through HDF5's
+/// own writes.
+class RowAppender {
+public:
+    RowAppender(const h5::Where& where, hid_t target, std::string path);
+    /// Rows [first, first + rows) of `source`; `last`: nothing is appended after them (so a
+    /// partly filled final chunk may be copied raw).
+    void append(const h5::Where& source_where, hid_t source, hsize_t first, hsize_t rows, bool last);
+    /// Writes the final, partly filled chunk (zero-padded, as the recorder writes one).
+    void finish();
+    const CopyCount& count() const { return m_count; }
+
+private:
+    enum class Encoding { shuffle_deflate, none, hdf5 };
+    void write_pending();
+    /// Raw copies of the source's whole chunks from `first`; returns the rows copied.
+    hsize_t copy_raw_chunks(const h5::Where& source_where, hid_t source, hsize_t first, hsize_t rows, bool last);
+
+    const h5::Where& m_where;
+    hid_t m_target;
+    std::string m_path;
+    Encoding m_encoding = Encoding::hdf5;
+    int m_level = 0;
+    hsize_t m_chunk = 0;             ///< rows per chunk of the target
+    std::size_t m_row_bytes = 0;
+    std::size_t m_element_bytes = 0;
+    h5::Id m_type;                   ///< the target's file type (read and written unconverted)
+    h5::Id m_dcpl;
+    hsize_t m_rows = 0;              ///< rows appended so far
+    std::vector<unsigned char> m_pending;  ///< rows of the chunk being filled, from its first row
+    std::vector<unsigned char> m_encoded;
+    CopyCount m_count;
+};
 
 }  // namespace collidescope::recorder::join

@@ -389,19 +389,18 @@ JoinSummary write_joined(std::vector<Part>& parts, const std::vector<Node>& tree
             copy_offsets(parts, node.path, where, target.get());
             continue;
         }
-        hsize_t at = 0;
+        join::RowAppender appender(where, target.get(), node.path);
         for (std::size_t i = 0; i < parts.size(); ++i) {
             const Part& part = parts[i];
             const Rows rows = part.rows.at(node.path);
             if (rows.end <= rows.begin) continue;
             const h5::Id source = h5::open_dataset(part.where, part.file.get(), node.path);
-            const join::CopyCount count = join::copy_rows(part.where, source.get(), where, target.get(), node.path, rows.begin,
-                                                          rows.end - rows.begin, at, i + 1 == parts.size());
-            at += rows.end - rows.begin;
-            summary.raw_chunks += count.raw_chunks;
-            summary.raw_bytes += count.raw_bytes;
-            summary.rewritten_rows += count.rewritten_rows;
+            appender.append(part.where, source.get(), rows.begin, rows.end - rows.begin, i + 1 == parts.size());
         }
+        appender.finish();
+        summary.raw_chunks += appender.count().raw_chunks;
+        summary.raw_bytes += appender.count().raw_bytes;
+        summary.rewritten_rows += appender.count().rewritten_rows;
     }
     if (complete) {
         h5::write_attr(where, out.get(), schema::k_attr_frames_recorded, static_cast<std::int64_t>(summary.frames));

@@ -42,7 +42,9 @@ void expect_same_recording(const Recording& joined, const Recording& whole, bool
     ASSERT_EQ(counts.size(), whole_counts.size());
     for (std::size_t c = 0; c < counts.size(); ++c) {
         const bool result = counts[c].name == "triangles" || counts[c].name == "colliding_pairs";
-        if (all_counts || result) EXPECT_EQ(counts[c].values, whole_counts[c].values) << counts[c].name;
+        if (all_counts || result) {
+            EXPECT_EQ(counts[c].values, whole_counts[c].values) << counts[c].name;
+        }
     }
     ASSERT_EQ(joined.objects().size(), whole.objects().size());
     const std::vector<std::uint32_t> frames = whole.frame_indices();

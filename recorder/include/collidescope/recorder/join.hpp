@@ -30,7 +30,7 @@ struct JoinSummary {
     std::uint64_t frames = 0;
     std::uint64_t raw_chunks = 0;        ///< chunks copied without decoding
     std::uint64_t raw_bytes = 0;         ///< their stored bytes
-    std::uint64_t rewritten_rows = 0;    ///< rows copied through HDF5's filters (part boundaries)
+    std::uint64_t rewritten_rows = 0;    ///< rows decoded and encoded again (not lined up with the chunks)
     bool complete = true;                ///< marked finished (every part was)
 };
 
