@@ -57,6 +57,7 @@ bool ends_with(const std::string& text, const std::string& suffix) {
 }
 std::string leaf(const std::string& path) { return path.substr(path.rfind('/') + 1); }
 bool is_offsets(const std::string& path) { return ends_with(leaf(path), "offsets"); }
+bool is_topology_offsets(const std::string& path) { return leaf(path) == schema::k_topology_offsets; }
 
 h5::Id open_part_file(const h5::Where& where) {
     const std::string& path = where.file();
@@ -144,7 +145,7 @@ void plan_rows(Part& part, const std::vector<Node>& tree) {
                   schema::k_gpu_survivor_offsets, schema::k_gpu_survivors, schema::k_depth_image_offsets,
                   schema::k_depth_info, schema::k_depth_range, schema::k_depth_pixel_offsets, schema::k_depth_pixels});
     for (const Node& node : tree) {
-        if (node.group || !ends_with(node.path, "/" + std::string(schema::k_topology_offsets))) continue;
+        if (node.group || !is_topology_offsets(node.path)) continue;
         const std::string object = node.path.substr(0, node.path.rfind('/') + 1);
         // Topologies in force by the last complete frame.
         const std::string from = object + schema::k_topology_from_frame;
@@ -179,7 +180,7 @@ void plan_continuation(Part& part, const Part& previous, const std::vector<Node>
         if (rows.end > 0) rows.begin = 1;
     }
     for (const Node& node : tree) {
-        if (node.group || !ends_with(node.path, "/" + std::string(schema::k_topology_offsets))) continue;
+        if (node.group || !is_topology_offsets(node.path)) continue;
         const std::string object = node.path.substr(0, node.path.rfind('/') + 1);
         const std::string counts = object + schema::k_topology_vertex_count;
         const std::string triangles = object + schema::k_triangles;

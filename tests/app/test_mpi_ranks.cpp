@@ -101,7 +101,10 @@ std::string mpirun_command(int ranks, const std::vector<std::string>& args, cons
     setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
     std::string command = "cd " + quoted(dir.string()) + " && exec timeout 300 mpirun --oversubscribe -np " + std::to_string(ranks) +
                           " " + quoted(COLLIDESCOPE_BIN);
-    for (const std::string& arg : args) command += " " + quoted(arg);
+    for (const std::string& arg : args) {
+        command += ' ';
+        command += quoted(arg);
+    }
     return command + " > mpi.stdout 2> mpi.stderr";
 }
 
