@@ -15,6 +15,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace collidescope {
 namespace {
 
@@ -191,6 +193,66 @@ TEST(RecorderJoin, CommandLineJoinComparesEqualToTheSerialRecording) {
     ASSERT_EQ(gap.err_lines().size(), 1u) << gap.err;
     EXPECT_NE(gap.err.find("part-0.h5 and part-2.h5 leave a gap"), std::string::npos) << gap.err;
     EXPECT_FALSE(fs::exists(dir / "gap.h5"));
+}
+
+bool same_value(double a, double b) { return (std::isnan(a) && std::isnan(b)) || a == b; }
+
+void expect_same_series(const std::vector<recorder::Series<double>>& joined, const std::vector<recorder::Series<double>>& part,
+                        std::uint64_t row, std::uint64_t part_row) {
+    ASSERT_EQ(joined.size(), part.size());
+    for (std::size_t s = 0; s < joined.size(); ++s) {
+        EXPECT_TRUE(same_value(joined[s].values[row], part[s].values[part_row])) << joined[s].name << " row " << row;
+    }
+}
+
+// The GPU cull's state (its view choices) makes a part's details differ from the whole run's,
+// so here every row of the joined file, CSR-indexed tables included (passes, survivors, depth
+// images with their nested pixel offsets), is checked against the row of the part it came from.
+TEST(RecorderJoin, EveryRowOfTheGpuDetailsComesFromItsPart) {
+    TempDir dir;
+    const std::vector<std::string> record = {"record", "--scene", "C:small", "--method", "gpu", "--depth", "every:3",
+                                             "--threads", "1", "-q", "-o"};
+    auto run = [&](std::vector<std::string> args) { return testing::run_cli(args, dir.path()); };
+    auto with = [&](const std::string& frames, const std::string& file) {
+        std::vector<std::string> args = record;
+        args.push_back(file);
+        args.insert(args.end(), {"--frames", frames});
+        return args;
+    };
+    ASSERT_EQ(run(with(":7", "p0.h5")).exit_code, 0);
+    ASSERT_EQ(run(with("7:", "p1.h5")).exit_code, 0);
+    ASSERT_EQ(run({"join", "p1.h5", "p0.h5", "-o", "joined.h5"}).exit_code, 0);
+    EXPECT_EQ(run({"validate", "joined.h5"}).exit_code, 0);
+    const Recording joined(dir / "joined.h5"), p0(dir / "p0.h5"), p1(dir / "p1.h5");
+    const std::uint64_t n0 = p0.frames_complete();
+    ASSERT_EQ(joined.frames_complete(), n0 + p1.frames_complete());
+    std::uint64_t images = 0;
+    for (std::uint64_t r = 0; r < joined.frames_complete(); ++r) {
+        SCOPED_TRACE("row " + std::to_string(r));
+        const Recording& part = r < n0 ? p0 : p1;
+        const std::uint64_t pr = r < n0 ? r : r - n0;
+        EXPECT_EQ(joined.pairs(r), part.pairs(pr));
+        EXPECT_EQ(joined.survivors(r), part.survivors(pr));
+        const auto passes = joined.gpu_passes(r), part_passes = part.gpu_passes(pr);
+        ASSERT_EQ(passes.size(), part_passes.size());
+        for (std::size_t i = 0; i < passes.size(); ++i) {
+            EXPECT_EQ(passes[i].items_tested, part_passes[i].items_tested);
+            EXPECT_EQ(passes[i].samples_passed, part_passes[i].samples_passed);
+            EXPECT_EQ(passes[i].view, part_passes[i].view);
+        }
+        const auto depth = joined.depth_images(r), part_depth = part.depth_images(pr);
+        ASSERT_EQ(depth.size(), part_depth.size());
+        for (std::size_t i = 0; i < depth.size(); ++i) {
+            EXPECT_EQ(depth[i].width, part_depth[i].width);
+            EXPECT_EQ(depth[i].view, part_depth[i].view);
+            EXPECT_EQ(depth[i].depth, part_depth[i].depth);
+            EXPECT_EQ(depth[i].depth_near, part_depth[i].depth_near);
+        }
+        images += depth.size();
+        expect_same_series(joined.frame_values("gpu"), part.frame_values("gpu"), r, pr);
+        expect_same_series(joined.stage_ms(), part.stage_ms(), r, pr);
+    }
+    EXPECT_GT(images, 0u);
 }
 
 }  // namespace
