@@ -98,7 +98,7 @@ int run_check(const CheckOptions& options) {
 
     // The first frame is read (and validated) before anything is printed, so bad input in a
     // static mesh gives one line on stderr: the error.
-    Frame frame = scene.source->frame(range.begin);
+    Frame frame = scene.source->frame(ranks::at_frame(range.begin));
     if (!options.quiet) progress.log(scene_line(scene, range, config));
     const InterruptGuard interrupt;
     std::uint32_t f = range.begin;
@@ -109,7 +109,7 @@ int run_check(const CheckOptions& options) {
         if (stats_out) stats_out->end_frame(f);
         progress.advance();
         if (++f == range.end || interrupt.signal() != 0) break;
-        frame = scene.source->frame(f);
+        frame = scene.source->frame(ranks::at_frame(f));
     }
     progress.finish();
     if (interrupt.signal() != 0) {

@@ -10,6 +10,7 @@
 
 #include "frame_range.hpp"
 
+#include <cstdint>
 #include <string>
 
 namespace collidescope::app::ranks {
@@ -51,7 +52,10 @@ std::string text_output(const std::string& target);
 /// `target`.rank<R>.h5 beside it (on a file system rank 0 can read), joined by rank 0 into
 /// `target` (recorder/join.hpp) and removed once every rank finished.
 std::string recording_output(const std::string& target);
-/// "rank 1 of 3, frames 30..59: " under MPI, "" serially: the start of this rank's error lines.
+/// The command reads and processes scene frame `frame` now (named in error lines); returns it.
+std::uint32_t at_frame(std::uint32_t frame);
+/// "rank 1 of 3, frames 30..59, at frame 42: " under MPI, "" serially: the start of this
+/// rank's error lines.
 std::string error_prefix();
 
 }  // namespace collidescope::app::ranks

@@ -127,7 +127,7 @@ int run_record(const RecordOptions& options) {
     PipelineConfig config = pipeline_config(options.engine, scene);
     config.gpu.depth_every = depth_every;
     Pipeline pipeline(config);
-    Frame frame = scene.source->frame(range.begin);
+    Frame frame = scene.source->frame(ranks::at_frame(range.begin));
 
     recorder::RecorderConfig recorder_config;
     const std::string output = ranks::recording_output(options.output);
@@ -151,7 +151,7 @@ int run_record(const RecordOptions& options) {
         pipeline.process(frame);
         progress.advance();
         if (++f == range.end || interrupt.signal() != 0) break;
-        frame = scene.source->frame(f);
+        frame = scene.source->frame(ranks::at_frame(f));
     }
     const int signal = interrupt.signal();
     const recorder::RecordSummary summary = recorder.finish(signal != 0 ? signal_name(signal) : std::string());

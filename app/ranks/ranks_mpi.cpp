@@ -36,6 +36,7 @@ struct State {
     long job = 0;         ///< rank 0's pid: names the temporary files of this run
     FrameRange block{};
     bool have_block = false;
+    std::int64_t frame = -1;  ///< the frame being read or processed, -1 before the first
     std::vector<TextOutput> texts;
     std::vector<std::string> recordings;  ///< targets; parts are recording_part(target, r)
 };
@@ -242,12 +243,18 @@ std::string recording_output(const std::string& target) {
     return recording_part(target, g_state.rank);
 }
 
+std::uint32_t at_frame(std::uint32_t frame) {
+    g_state.frame = frame;
+    return frame;
+}
+
 std::string error_prefix() {
     if (!g_state.active) return "";
     std::string prefix = "rank " + std::to_string(g_state.rank) + " of " + std::to_string(g_state.size);
     if (g_state.have_block) {
         prefix += ", frames " + std::to_string(g_state.block.begin) + ".." + std::to_string(g_state.block.end - 1);
     }
+    if (g_state.frame >= 0) prefix += ", at frame " + std::to_string(g_state.frame);
     return prefix + ": ";
 }
 

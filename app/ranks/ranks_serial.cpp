@@ -11,6 +11,7 @@ bool parallel() { return false; }
 FrameRange block(FrameRange range) { return range; }
 std::string text_output(const std::string& target) { return target; }
 std::string recording_output(const std::string& target) { return target; }
+std::uint32_t at_frame(std::uint32_t frame) { return frame; }
 std::string error_prefix() { return ""; }
 
 }  // namespace collidescope::app::ranks
