@@ -26,7 +26,8 @@ int print_error(std::string message) {
     for (char& c : message) {
         if (c == '\n' || c == '\r') c = ' ';
     }
-    std::cerr << "collidescope: error: " << collidescope::app::ranks::error_prefix() << message << '\n';
+    // One write: under mpirun every rank's stderr goes to the same terminal.
+    std::cerr << "collidescope: error: " + collidescope::app::ranks::error_prefix() + message + '\n';
     return k_exit_error;
 }
 
