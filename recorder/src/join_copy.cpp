@@ -5,7 +5,9 @@
 #include "chunk_codec.hpp"
 
 #include <algorithm>
+#include <exception>
 #include <span>
+#include <thread>
 
 namespace collidescope::recorder::join {
 namespace {
@@ -99,6 +101,7 @@ RowAppender::RowAppender(const h5::Where& where, hid_t target, std::string path)
     m_element_bytes = H5Tget_size(m_type.get());
     m_row_bytes = m_element_bytes * layout.dims[1];
     m_chunk = chunk_rows_of(m_dcpl.get());
+    m_threads = std::max(1u, std::thread::hardware_concurrency());
     hsize_t chunk[2] = {0, 0};
     const bool whole_rows = m_chunk > 0 && (layout.rank == 1 || (H5Pget_chunk(m_dcpl.get(), 2, chunk) == 2 && chunk[1] == layout.dims[1]));
     if (!whole_rows) return;  // HDF5's writes
@@ -176,7 +179,15 @@ void RowAppender::append(const h5::Where& source_where, hid_t source, hsize_t fi
                                  buffer.begin() + static_cast<std::ptrdiff_t>(at + take));
                 at += take;
                 m_rows += take / m_row_bytes;
-                if (m_pending.size() == chunk_bytes) write_pending();
+                if (m_pending.size() == chunk_bytes) {
+                    if (m_encoding == Encoding::shuffle_deflate) {
+                        m_full.emplace_back(m_rows - m_chunk, std::move(m_pending));
+                        m_pending = {};
+                        if (m_full.size() >= m_threads) write_full();
+                    } else {
+                        write_pending();
+                    }
+                }
             }
         }
         row += n;
@@ -200,6 +211,37 @@ void RowAppender::write_pending() {
     m_pending.clear();
 }
 
-void RowAppender::finish() { write_pending(); }
+void RowAppender::write_full() {
+    if (m_full.empty()) return;
+    const std::size_t chunk_bytes = m_chunk * m_row_bytes;
+    std::vector<std::vector<unsigned char>> encoded(m_full.size());
+    std::vector<std::exception_ptr> errors(m_full.size());
+    std::vector<std::thread> threads;
+    for (std::size_t i = 0; i < m_full.size(); ++i) {
+        threads.emplace_back([&, i] {
+            try {
+                encode_shuffle_deflate(std::as_bytes(std::span<const unsigned char>(m_full[i].second)), m_element_bytes, m_level,
+                                       encoded[i], chunk_bytes);
+            } catch (...) {
+                errors[i] = std::current_exception();
+            }
+        });
+    }
+    for (std::thread& thread : threads) thread.join();
+    for (const std::exception_ptr& error : errors) {
+        if (error) std::rethrow_exception(error);
+    }
+    for (std::size_t i = 0; i < m_full.size(); ++i) {
+        const hsize_t offset[2] = {m_full[i].first, 0};
+        m_where.check(H5Dwrite_chunk(m_target, H5P_DEFAULT, 0, offset, encoded[i].size(), encoded[i].data()),
+                      "cannot write a chunk of " + m_path);
+    }
+    m_full.clear();
+}
+
+void RowAppender::finish() {
+    write_full();
+    write_pending();
+}
 
 }  // namespace collidescope::recorder::join

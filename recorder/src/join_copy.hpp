@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace collidescope::recorder::join {
@@ -55,6 +56,8 @@ public:
 private:
     enum class Encoding { shuffle_deflate, none, hdf5 };
     void write_pending();
+    /// Encodes the full chunks waiting in m_full, one thread each, and writes them.
+    void write_full();
     /// Raw copies of the source's whole chunks from `first`; returns the rows copied.
     hsize_t copy_raw_chunks(const h5::Where& source_where, hid_t source, hsize_t first, hsize_t rows, bool last);
 
@@ -71,6 +74,10 @@ private:
     hsize_t m_rows = 0;              ///< rows appended so far
     std::vector<unsigned char> m_pending;  ///< rows of the chunk being filled, from its first row
     std::vector<unsigned char> m_encoded;
+    /// Full chunks waiting to be encoded (first row, raw bytes): as many as there are
+    /// hardware threads, then encoded together.
+    std::vector<std::pair<hsize_t, std::vector<unsigned char>>> m_full;
+    std::size_t m_threads = 1;
     CopyCount m_count;
 };
 
