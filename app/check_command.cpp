@@ -8,6 +8,7 @@
 #include "interrupt.hpp"
 #include "output_stream.hpp"
 #include "progress.hpp"
+#include "ranks.hpp"
 #include "scene_input.hpp"
 
 #include "collidescope/error.hpp"
@@ -76,7 +77,8 @@ int run_check(const CheckOptions& options) {
         throw InputError("--pairs and --stats cannot both write to stdout (-)");
     }
     const Scene scene = open_scene(options.inputs, options.scene, options.engine.animation);
-    const FrameRange range = parse_frame_range(options.frames, scene.source->frame_count());
+    // Under mpirun: this rank's block, and outputs of its own that rank 0 assembles (ranks.hpp).
+    const FrameRange range = ranks::block(parse_frame_range(options.frames, scene.source->frame_count()));
     const PipelineConfig config = pipeline_config(options.engine, scene);
     Pipeline pipeline(config);
 
@@ -87,12 +89,16 @@ int run_check(const CheckOptions& options) {
     std::optional<OutputStream> stats_out;
     std::optional<PairsWriter> pairs_writer;
     std::optional<StatsWriter> stats_writer;
-    if (!options.pairs.empty()) pipeline.add_sink(pairs_writer.emplace(pairs_out.emplace(options.pairs).stream()));
-    if (!options.stats.empty()) pipeline.add_sink(stats_writer.emplace(stats_out.emplace(options.stats).stream()));
+    if (!options.pairs.empty()) {
+        pipeline.add_sink(pairs_writer.emplace(pairs_out.emplace(ranks::text_output(options.pairs)).stream()));
+    }
+    if (!options.stats.empty()) {
+        pipeline.add_sink(stats_writer.emplace(stats_out.emplace(ranks::text_output(options.stats)).stream()));
+    }
 
     // The first frame is read (and validated) before anything is printed, so bad input in a
     // static mesh gives one line on stderr: the error.
-    Frame frame = scene.source->frame(range.begin);
+    Frame frame = scene.source->frame(ranks::at_frame(range.begin));
     if (!options.quiet) progress.log(scene_line(scene, range, config));
     const InterruptGuard interrupt;
     std::uint32_t f = range.begin;
@@ -103,7 +109,7 @@ int run_check(const CheckOptions& options) {
         if (stats_out) stats_out->end_frame(f);
         progress.advance();
         if (++f == range.end || interrupt.signal() != 0) break;
-        frame = scene.source->frame(f);
+        frame = scene.source->frame(ranks::at_frame(f));
     }
     progress.finish();
     if (interrupt.signal() != 0) {

@@ -36,6 +36,9 @@ Command add_replay_command(CLI::App& app);
 /// `collidescope export`: a built-in scene as PLY frame sequences + scene.json (export_command.cpp).
 Command add_export_command(CLI::App& app);
 
+/// `collidescope join`: part recordings of contiguous frame ranges -> one recording (join_command.cpp).
+Command add_join_command(CLI::App& app);
+
 /// `collidescope bench`: every method on every data set, CSVs, plots, a table (bench_command.cpp).
 Command add_bench_command(CLI::App& app);
 

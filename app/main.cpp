@@ -2,6 +2,7 @@
 // every error into one line on stderr and exit code 2 (the library never prints or exits).
 
 #include "commands.hpp"
+#include "ranks.hpp"
 
 #include "collidescope/error.hpp"
 
@@ -25,7 +26,8 @@ int print_error(std::string message) {
     for (char& c : message) {
         if (c == '\n' || c == '\r') c = ' ';
     }
-    std::cerr << "collidescope: error: " << message << '\n';
+    // One write: under mpirun every rank's stderr goes to the same terminal.
+    std::cerr << "collidescope: error: " + collidescope::app::ranks::error_prefix() + message + '\n';
     return k_exit_error;
 }
 
@@ -35,9 +37,7 @@ int handle_parse_error(const CLI::App& app, const CLI::ParseError& error) {
     return print_error(std::string(error.what()) + " (see --help)");
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
     CLI::App app("Collision detection between deforming triangle meshes, with recorded "
                  "sessions and offscreen debug images.", "collidescope");
     app.set_version_flag("--version", version_line(), "Print the version and git revision");
@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
         collidescope::app::add_inspect_command(app),
         collidescope::app::add_validate_command(app),
         collidescope::app::add_compare_command(app),
+        collidescope::app::add_join_command(app),
         collidescope::app::add_replay_command(app),
         collidescope::app::add_export_command(app),
         collidescope::app::add_bench_command(app),
@@ -59,7 +60,12 @@ int main(int argc, char** argv) {
     }
     try {
         for (const collidescope::app::Command& command : commands) {
-            if (command.parser->parsed()) return command.run();
+            if (!command.parser->parsed()) continue;
+            const std::string name = command.parser->get_name();
+            if (collidescope::app::ranks::parallel() && name != "check" && name != "record") {
+                return print_error(name + " does not run frame-parallel: run it without mpirun (check and record do)");
+            }
+            return command.run();
         }
         return print_error("no subcommand given (see --help)");
     } catch (const collidescope::InputError& error) {
@@ -69,4 +75,13 @@ int main(int argc, char** argv) {
     } catch (const std::exception& error) {
         return print_error(error.what());
     }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    // Under mpirun each rank runs the command on its block of frames; rank 0 assembles the
+    // outputs (ranks.hpp). Serially this is just run().
+    collidescope::app::ranks::Session ranks(argc, argv);
+    return ranks.finish(run(argc, argv));
 }

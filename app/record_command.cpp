@@ -6,6 +6,7 @@
 #include "frame_range.hpp"
 #include "interrupt.hpp"
 #include "progress.hpp"
+#include "ranks.hpp"
 #include "scene_input.hpp"
 #include "size_option.hpp"
 
@@ -125,14 +126,16 @@ int run_record(const RecordOptions& options) {
     const std::uint32_t depth_every = parse_depth(options.depth);
     const std::uint64_t budget = options.budget.empty() ? 0 : parse_size(options.budget, "--budget");
     const Scene scene = open_scene(options.inputs, options.scene, options.engine.animation);
-    const FrameRange range = parse_frame_range(options.frames, scene.source->frame_count());
+    // Under mpirun: this rank's block, into a part file rank 0 joins (ranks.hpp).
+    const FrameRange range = ranks::block(parse_frame_range(options.frames, scene.source->frame_count()));
     PipelineConfig config = pipeline_config(options.engine, scene);
     config.gpu.depth_every = depth_every;
     Pipeline pipeline(config);
-    Frame frame = scene.source->frame(range.begin);
+    Frame frame = scene.source->frame(ranks::at_frame(range.begin));
 
     recorder::RecorderConfig recorder_config;
-    recorder_config.path = options.output;
+    const std::string output = ranks::recording_output(options.output);
+    recorder_config.path = output;
     recorder_config.budget_bytes = budget;
     recorder_config.queue_bytes = parse_size(options.queue, "--queue-memory");
     recorder_config.deflate_level = options.compression;
@@ -144,7 +147,7 @@ int run_record(const RecordOptions& options) {
     if (!options.quiet) {
         progress.log("recording scene '" + scene.name + "': " + std::to_string(scene.source->object_count()) +
                      " objects, frames " + std::to_string(range.begin) + ".." + std::to_string(range.end - 1) +
-                     ", method " + config.method + " -> " + options.output);
+                     ", method " + config.method + " -> " + output);
     }
     const InterruptGuard interrupt;
     std::uint32_t f = range.begin;
@@ -152,16 +155,16 @@ int run_record(const RecordOptions& options) {
         pipeline.process(frame);
         progress.advance();
         if (++f == range.end || interrupt.signal() != 0) break;
-        frame = scene.source->frame(f);
+        frame = scene.source->frame(ranks::at_frame(f));
     }
     const int signal = interrupt.signal();
     const recorder::RecordSummary summary = recorder.finish(signal != 0 ? signal_name(signal) : std::string());
     progress.finish();
-    progress.log(summary_line(summary, options.output, budget, recorder_config.queue_bytes));
+    progress.log(summary_line(summary, output, budget, recorder_config.queue_bytes));
     if (signal == 0) return 0;
     progress.log("interrupted by " + signal_name(signal) + " after " + std::to_string(summary.frames) + " of " +
                  std::to_string(range.end - range.begin) + " frames (frames " + std::to_string(range.begin) + ".." +
-                 std::to_string(f - 1) + "); " + options.output + " is marked partial (attribute interrupted = " +
+                 std::to_string(f - 1) + "); " + output + " is marked partial (attribute interrupted = " +
                  signal_name(signal) + ")");
     return interrupted_exit_code(signal);
 }

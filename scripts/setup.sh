@@ -17,6 +17,8 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # recorder
   libhdf5-dev hdf5-tools
+  # frame-parallel check/record/replay under mpirun (docs/mpi.md)
+  openmpi-bin libopenmpi-dev
   # Mode 2 and replays: offscreen GL (OSMesa; EGL through libglvnd, whose CMake target
   # OpenGL::EGL also needs libOpenGL.so from libopengl-dev), overlays, PNG
   libosmesa6-dev libegl-dev libopengl-dev libimgui-dev libstb-dev fonts-dejavu-core

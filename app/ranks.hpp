@@ -1,0 +1,61 @@
+#pragma once
+// Frame-parallel runs under MPI: `mpirun -np N collidescope check|record ...` with the same
+// arguments as a serial run (docs/mpi.md). Each rank takes one contiguous block of the frames
+// (cold: its trees are built at its first frame, the adaptive policy starts from its priors),
+// writes its outputs to files of its own, and rank 0 assembles them, in frame order, into the
+// outputs a serial run writes. Without mpirun (or with one rank) every function here is the
+// identity and MPI is not started: a serial run is exactly what it was.
+//
+// The engine knows nothing of this; the commands ask for their block and their output names.
+
+#include "frame_range.hpp"
+
+#include <cstdint>
+#include <string>
+
+namespace collidescope::app::ranks {
+
+/// Rank `rank` of `size`'s block of `range`: contiguous, in rank order, sizes differing by at
+/// most one frame (the first range.size % size ranks take one more). Throws InputError when
+/// there are more ranks than frames.
+FrameRange block_of(FrameRange range, int rank, int size);
+
+/// Starts MPI when this process was launched by mpirun (or srun) with more than one rank, as
+/// the launcher's environment says (OMPI_COMM_WORLD_SIZE, PMI_SIZE, PMIX_RANK); ends it when
+/// destroyed. Builds without MPI always run serially.
+class Session {
+public:
+    Session(int& argc, char**& argv);
+    ~Session();
+    Session(const Session&) = delete;
+    Session& operator=(const Session&) = delete;
+
+    /// After this rank's command returned `code` (2: it failed, its error already printed):
+    /// combines every rank's code, assembles the outputs on rank 0 (text outputs gathered
+    /// through MPI and concatenated in rank order; part recordings joined) and returns the
+    /// run's exit code: 2 if a rank failed, else 130 or 143 if a rank
+    /// was stopped by a signal, else the largest (1 when any block had collisions), returned
+    /// by rank 0 (the others return 0: mpirun exits with the first non-zero code). Serially:
+    /// `code`.
+    int finish(int code);
+};
+
+/// True under mpirun with more than one rank.
+bool parallel();
+/// This rank's block of `range` (remembered for error lines); `range` serially.
+FrameRange block(FrameRange range);
+/// Where this rank writes a text output (--pairs, --stats) that the run delivers at `target`
+/// (a file or "-" for stdout): `target` serially, else a file of this rank's in the temporary
+/// directory, sent to rank 0 by MPI at the end (no shared file system needed).
+std::string text_output(const std::string& target);
+/// Where this rank writes a recording the run delivers at `target`: `target` serially, else
+/// `target`.rank<R>.h5 beside it (on a file system rank 0 can read), joined by rank 0 into
+/// `target` (recorder/join.hpp) and removed once every rank finished.
+std::string recording_output(const std::string& target);
+/// The command reads and processes scene frame `frame` now (named in error lines); returns it.
+std::uint32_t at_frame(std::uint32_t frame);
+/// "rank 1 of 3, frames 30..59, at frame 42: " under MPI, "" serially: the start of this
+/// rank's error lines.
+std::string error_prefix();
+
+}  // namespace collidescope::app::ranks

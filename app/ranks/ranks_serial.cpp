@@ -1,0 +1,17 @@
+// A build without MPI (Open MPI's packages were not found): every run is serial (ranks.hpp).
+
+#include "ranks.hpp"
+
+namespace collidescope::app::ranks {
+
+Session::Session(int&, char**&) {}
+Session::~Session() = default;
+int Session::finish(int code) { return code; }
+bool parallel() { return false; }
+FrameRange block(FrameRange range) { return range; }
+std::string text_output(const std::string& target) { return target; }
+std::string recording_output(const std::string& target) { return target; }
+std::uint32_t at_frame(std::uint32_t frame) { return frame; }
+std::string error_prefix() { return ""; }
+
+}  // namespace collidescope::app::ranks

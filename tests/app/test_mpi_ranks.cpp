@@ -1,0 +1,311 @@
+// Frame-parallel runs under mpirun (app/ranks.hpp, docs/mpi.md): the blocks of frames each rank
+// takes; `check` on 2 and 3 ranks (oversubscribed) gives the serial run's pairs TSV byte for
+// byte, its stats in frame order and its exit code, for every method; `record` on 2 ranks gives
+// a recording that `compare` finds equal to the serial one; a bad frame in one block and a rank
+// killed with SIGKILL end the run with an error naming the rank, and every finished frame stays
+// readable (`join --allow-incomplete`, `validate --allow-incomplete`).
+//
+// Open MPI refuses to run as root (CI does) unless told: the tests set its two variables. Under
+// CI=true a build without Open MPI, or no mpirun, fails these tests instead of skipping them.
+
+#include "ranks.hpp"
+
+#include "support/cli_runner.hpp"
+#include "mesh/temp_files.hpp"
+
+#include "collidescope/error.hpp"
+#include "collidescope/recorder/reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+extern char** environ;
+
+namespace collidescope {
+namespace {
+
+namespace fs = std::filesystem;
+using app::FrameRange;
+using testing::CliResult;
+using testing_files::TempDir;
+
+TEST(FrameBlocks, ContiguousInRankOrderSizesWithinOne) {
+    for (std::uint32_t begin : {0u, 3u, 100u}) {
+        for (std::uint32_t frames = 1; frames <= 40; ++frames) {
+            for (int size = 1; size <= static_cast<int>(std::min<std::uint32_t>(frames, 9)); ++size) {
+                std::uint32_t next = begin, smallest = frames, largest = 0;
+                for (int rank = 0; rank < size; ++rank) {
+                    const FrameRange block = app::ranks::block_of({begin, begin + frames}, rank, size);
+                    ASSERT_EQ(block.begin, next) << frames << " frames, rank " << rank << " of " << size;
+                    ASSERT_GT(block.end, block.begin);
+                    smallest = std::min(smallest, block.end - block.begin);
+                    largest = std::max(largest, block.end - block.begin);
+                    next = block.end;
+                }
+                EXPECT_EQ(next, begin + frames);
+                EXPECT_LE(largest - smallest, 1u);
+            }
+        }
+    }
+}
+
+TEST(FrameBlocks, MoreRanksThanFramesIsAnError) {
+    EXPECT_THROW(app::ranks::block_of({0, 3}, 0, 4), InputError);
+    EXPECT_NO_THROW(app::ranks::block_of({0, 4}, 3, 4));
+}
+
+bool under_ci() {
+    const char* ci = std::getenv("CI");
+    return ci != nullptr && std::string(ci) == "true";
+}
+
+// Why MPI runs cannot be tested here, or "".
+std::string mpi_missing() {
+#if !COLLIDESCOPE_MPI
+    return "collidescope was built without Open MPI (libopenmpi-dev)";
+#endif
+    if (std::system("command -v mpirun > /dev/null 2>&1") != 0) return "mpirun is not on PATH (openmpi-bin)";
+    return "";
+}
+
+#define REQUIRE_MPI()                                                                                     \
+    do {                                                                                                  \
+        const std::string missing = mpi_missing();                                                        \
+        if (!missing.empty()) {                                                                           \
+            if (under_ci()) FAIL() << missing << " (CI=true: scripts/setup.sh installs Open MPI)";         \
+            GTEST_SKIP() << missing;                                                                      \
+        }                                                                                                 \
+    } while (0)
+
+std::string quoted(const std::string& word) {
+    std::string out = "'";
+    for (const char c : word) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+// The shell command that runs `args` on `ranks` ranks in `dir`, output to mpi.stdout/.stderr;
+// a run that hangs is ended after 5 minutes (exit 124).
+std::string mpirun_command(int ranks, const std::vector<std::string>& args, const fs::path& dir) {
+    // CI runs as root; Open MPI needs both variables to allow it.
+    setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+    setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+    std::string command = "cd " + quoted(dir.string()) + " && exec timeout 300 mpirun --oversubscribe -np " + std::to_string(ranks) +
+                          " " + quoted(COLLIDESCOPE_BIN);
+    for (const std::string& arg : args) {
+        command += ' ';
+        command += quoted(arg);
+    }
+    return command + " > mpi.stdout 2> mpi.stderr";
+}
+
+CliResult run_mpi(int ranks, const std::vector<std::string>& args, const fs::path& dir) {
+    const int status = std::system(mpirun_command(ranks, args, dir).c_str());
+    CliResult result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = testing::read_text(dir / "mpi.stdout");
+    result.err = testing::read_text(dir / "mpi.stderr");
+    return result;
+}
+
+std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
+    args.insert(args.end(), more.begin(), more.end());
+    return args;
+}
+
+// (frame, colliding_pairs) of each stats line, in the file's order.
+std::vector<std::pair<long, long>> stats_frames(const std::string& jsonl) {
+    std::vector<std::pair<long, long>> frames;
+    std::istringstream in(jsonl);
+    for (std::string line; std::getline(in, line);) {
+        const auto frame = line.find("\"frame\":");
+        const auto pairs = line.find("\"colliding_pairs\":");
+        EXPECT_NE(frame, std::string::npos) << line;
+        EXPECT_NE(pairs, std::string::npos) << line;
+        if (frame == std::string::npos || pairs == std::string::npos) continue;
+        frames.emplace_back(std::stol(line.substr(frame + 8)), std::stol(line.substr(pairs + 18)));
+    }
+    return frames;
+}
+
+struct SceneMethods {
+    std::string scene;
+    std::string frames;
+    std::vector<std::string> methods;
+};
+
+// Every method on small built-in scenes; the GPU cull's methods (llvmpipe here) on fewer frames.
+const std::vector<SceneMethods> k_cases = {
+    {"C:small", ":12", {"brute", "aabb", "aabb-thesis", "hybrid", "adaptive", "adaptive-thesis", "adaptive-cost"}},
+    {"C:small", ":6", {"gpu", "gpu-naive"}},
+    {"D:small", ":9", {"brute", "aabb", "adaptive"}},
+    {"demo", ":9", {"aabb", "hybrid"}},
+};
+
+TEST(MpiCheck, TwoAndThreeRanksGiveTheSerialPairsStatsAndExitCode) {
+    REQUIRE_MPI();
+    TempDir dir;
+    for (const SceneMethods& c : k_cases) {
+        for (const std::string& method : c.methods) {
+            SCOPED_TRACE(c.scene + " --frames " + c.frames + " --method " + method);
+            const std::vector<std::string> check = {"check", "--scene", c.scene, "--frames", c.frames, "--method", method,
+                                                    "--threads", "1", "-q", "--stats", "stats.jsonl"};
+            const CliResult serial = testing::run_cli(with(check, {"--pairs", "serial.tsv"}), dir.path());
+            ASSERT_TRUE(serial.exit_code == 0 || serial.exit_code == 1) << serial.err;
+            const std::string serial_pairs = testing::read_text(dir / "serial.tsv");
+            const auto serial_stats = stats_frames(testing::read_text(dir / "stats.jsonl"));
+            for (const int ranks : {2, 3}) {
+                SCOPED_TRACE(std::to_string(ranks) + " ranks");
+                // Two ranks write the pairs to a file, three to stdout.
+                const bool to_stdout = ranks == 3;
+                const CliResult parallel = run_mpi(ranks, with(check, {"--pairs", to_stdout ? "-" : "mpi.tsv"}), dir.path());
+                EXPECT_EQ(parallel.exit_code, serial.exit_code) << parallel.err;
+                EXPECT_EQ(to_stdout ? parallel.out : testing::read_text(dir / "mpi.tsv"), serial_pairs);
+                EXPECT_EQ(stats_frames(testing::read_text(dir / "stats.jsonl")), serial_stats);
+                EXPECT_FALSE(fs::exists(dir / "stats.jsonl.partial"));
+            }
+        }
+    }
+}
+
+TEST(MpiRecord, TwoRanksJoinIntoTheSerialRecording) {
+    REQUIRE_MPI();
+    TempDir dir;
+    const std::vector<std::string> record = {"record", "--scene", "D:small", "--method", "aabb", "--threads", "1", "-q"};
+    ASSERT_EQ(testing::run_cli(with(record, {"-o", "serial.h5"}), dir.path()).exit_code, 0);
+    const CliResult parallel = run_mpi(2, with(record, {"-o", "mpi.h5"}), dir.path());
+    ASSERT_EQ(parallel.exit_code, 0) << parallel.err;
+    EXPECT_NE(parallel.err.find("joined the 2 ranks' parts"), std::string::npos) << parallel.err;
+    EXPECT_FALSE(fs::exists(dir / "mpi.h5.rank0.h5"));
+    EXPECT_FALSE(fs::exists(dir / "mpi.h5.rank1.h5"));
+    const CliResult compare = testing::run_cli({"compare", "serial.h5", "mpi.h5"}, dir.path());
+    EXPECT_EQ(compare.exit_code, 0) << compare.out;
+    EXPECT_EQ(testing::run_cli({"validate", "mpi.h5"}, dir.path()).exit_code, 0);
+    const recorder::Recording serial(dir / "serial.h5"), joined(dir / "mpi.h5");
+    EXPECT_EQ(joined.dataset_paths(), serial.dataset_paths());
+    for (const std::string& path : serial.dataset_paths()) EXPECT_EQ(joined.rows_of(path), serial.rows_of(path)) << path;
+}
+
+TEST(MpiFaults, BadFrameInOneBlockNamesRankAndFrameAndKeepsFinishedFrames) {
+    REQUIRE_MPI();
+    TempDir dir;
+    ASSERT_EQ(testing::run_cli({"export", "C:small", "--frames", ":16", "-o", "scene", "-q"}, dir.path()).exit_code, 0);
+    const std::vector<std::string> check = {"check", "scene/scene.json", "--method", "aabb", "--threads", "1", "-q"};
+    ASSERT_EQ(testing::run_cli(with(check, {"--exit-zero", "--pairs", "serial.tsv"}), dir.path()).exit_code, 0);
+    { std::ofstream(dir / "scene" / "sheet_0.0011.ply") << "not a mesh\n"; }  // rank 1 of 2 takes frames 8..15
+
+    const CliResult checked = run_mpi(2, with(check, {"--pairs", "mpi.tsv"}), dir.path());
+    EXPECT_EQ(checked.exit_code, 2) << checked.err;
+    const std::string line = "collidescope: error: rank 1 of 2, frames 8..15, at frame 11: scene/sheet_0.0011.ply";
+    EXPECT_NE(checked.err.find(line), std::string::npos) << checked.err;
+    // Frames 0..10 were finished (rank 1 got to 10): the partial output holds exactly them.
+    EXPECT_FALSE(fs::exists(dir / "mpi.tsv"));
+    std::vector<testing::FramePair> expected;
+    for (const testing::FramePair& p : testing::parse_pairs_tsv(testing::read_text(dir / "serial.tsv"))) {
+        if (p.frame < 11) expected.push_back(p);
+    }
+    EXPECT_EQ(testing::parse_pairs_tsv(testing::read_text(dir / "mpi.tsv.partial")), expected);
+
+    const CliResult recorded = run_mpi(2, {"record", "scene/scene.json", "--method", "aabb", "--threads", "1", "-q", "-o", "run.h5"},
+                                       dir.path());
+    EXPECT_EQ(recorded.exit_code, 2) << recorded.err;
+    EXPECT_NE(recorded.err.find(line), std::string::npos) << recorded.err;
+    EXPECT_NE(recorded.err.find("join --allow-incomplete"), std::string::npos) << recorded.err;
+    EXPECT_FALSE(fs::exists(dir / "run.h5"));
+    const CliResult joined = testing::run_cli({"join", "--allow-incomplete", "run.h5.rank0.h5", "run.h5.rank1.h5", "-o", "kept.h5"},
+                                              dir.path());
+    ASSERT_EQ(joined.exit_code, 0) << joined.err;
+    EXPECT_EQ(testing::run_cli({"validate", "--allow-incomplete", "kept.h5"}, dir.path()).exit_code, 0);
+    const recorder::Recording kept(dir / "kept.h5");
+    EXPECT_EQ(kept.frames_complete(), 11u);
+    for (std::uint64_t r = 0; r < kept.frames_complete(); ++r) {
+        std::vector<TrianglePair> pairs;
+        for (const testing::FramePair& p : expected) {
+            if (p.frame == r) pairs.push_back(p.pair);
+        }
+        EXPECT_EQ(kept.pairs(r), pairs) << "frame " << r;
+    }
+}
+
+std::uint64_t frames_complete_now(const fs::path& file) {
+    try {
+        return recorder::Recording(file).frames_complete();
+    } catch (const InputError&) {
+        return 0;
+    }
+}
+
+// The pid of the process whose environment holds both `tag` and OMPI_COMM_WORLD_RANK=`rank`.
+pid_t find_rank(const std::string& tag, int rank) {
+    const std::string want = "OMPI_COMM_WORLD_RANK=" + std::to_string(rank);
+    for (const fs::directory_entry& entry : fs::directory_iterator("/proc")) {
+        const std::string name = entry.path().filename().string();
+        if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+        std::ifstream in(entry.path() / "environ", std::ios::binary);
+        const std::string environment((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        std::vector<std::string> variables;
+        std::istringstream split(environment);
+        for (std::string v; std::getline(split, v, '\0');) variables.push_back(v);
+        const bool tagged = std::find(variables.begin(), variables.end(), tag) != variables.end();
+        const bool ranked = std::find(variables.begin(), variables.end(), want) != variables.end();
+        if (tagged && ranked) return static_cast<pid_t>(std::stol(name));
+    }
+    return -1;
+}
+
+TEST(MpiFaults, SigkillOfARankEndsTheRunNamingItAndKeepsEveryFinishedFrame) {
+    REQUIRE_MPI();
+    TempDir dir;
+    // C's first 60 frames on AABB trees, one thread: about 60 ms a frame, 2 s per rank.
+    const std::string tag = "COLLIDESCOPE_TEST_JOB=" + std::to_string(getpid());
+    const std::string command = "export " + tag + " && " +
+                                mpirun_command(2, {"record", "--scene", "C", "--frames", ":60", "--method", "aabb", "--threads",
+                                                   "1", "-q", "-o", "run.h5"},
+                                               dir.path());
+    std::vector<std::string> words = {"/bin/sh", "-c", command};
+    std::vector<char*> argv;
+    for (std::string& word : words) argv.push_back(word.data());
+    argv.push_back(nullptr);
+    pid_t mpirun = -1;
+    ASSERT_EQ(posix_spawn(&mpirun, "/bin/sh", nullptr, nullptr, argv.data(), environ), 0);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    bool killed = false;
+    while (!killed && std::chrono::steady_clock::now() < deadline) {
+        if (waitpid(mpirun, nullptr, WNOHANG) == mpirun) break;
+        if (frames_complete_now(dir / "run.h5.rank1.h5") >= 3) {
+            const pid_t rank1 = find_rank(tag, 1);
+            ASSERT_GT(rank1, 0);
+            killed = kill(rank1, SIGKILL) == 0;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    ASSERT_TRUE(killed) << "the run ended before rank 1 could be killed";
+    int status = 0;
+    waitpid(mpirun, &status, 0);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) != 0) << status;
+    const std::string err = testing::read_text(dir / "mpi.stderr");
+    EXPECT_NE(err.find("rank 1"), std::string::npos) << err;
+    EXPECT_FALSE(fs::exists(dir / "run.h5"));
+    // Whatever each rank flushed is there: rank 1's first 3 frames (30..32) at least.
+    std::vector<std::string> parts;
+    for (const char* part : {"run.h5.rank0.h5", "run.h5.rank1.h5"}) {
+        if (frames_complete_now(dir / part) > 0) parts.push_back(part);
+    }
+    ASSERT_FALSE(parts.empty());
+    EXPECT_GE(frames_complete_now(dir / "run.h5.rank1.h5"), 3u);
+    const CliResult joined = testing::run_cli(with({"join", "--allow-incomplete", "-o", "kept.h5"}, parts), dir.path());
+    ASSERT_EQ(joined.exit_code, 0) << joined.err;
+    EXPECT_EQ(testing::run_cli({"validate", "--allow-incomplete", "kept.h5"}, dir.path()).exit_code, 0);
+}
+
+}  // namespace
+}  // namespace collidescope
