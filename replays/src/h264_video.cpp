@@ -83,7 +83,9 @@ private:
         encoder.colorspace = AVCOL_SPC_SMPTE170M;
         encoder.color_primaries = AVCOL_PRI_SMPTE170M;
         encoder.color_trc = AVCOL_TRC_SMPTE170M;
-        encoder.thread_count = 0;  // x264 picks its threads
+        // One encoder thread: the render threads already fill the cores, and x264's own pool
+        // (frame threads, lookahead) only competed with them (docs/experiments/video-encoding.md).
+        encoder.thread_count = 1;
     }
 
     // The frame as m_width x m_height: itself, or copied with its last column and row repeated.
