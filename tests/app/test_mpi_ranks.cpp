@@ -99,7 +99,13 @@ std::string mpirun_command(int ranks, const std::vector<std::string>& args, cons
     // CI runs as root; Open MPI needs both variables to allow it.
     setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
     setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-    std::string command = "cd " + quoted(dir.string()) + " && exec timeout 300 mpirun --oversubscribe -np " + std::to_string(ranks) +
+    // In the AddressSanitizer build (scripts/sanitize.sh address) the ranks check memory errors
+    // but not leaks: Open MPI's components are dlopen'ed and closed again by MPI_Finalize, so
+    // the memory they keep is reported with stacks that end in "<unknown module>", which no
+    // suppression can name (docs/sanitizers.md). The serial tests check the same code for
+    // leaks. The variable only sets this one flag; elsewhere it does nothing.
+    std::string command = "cd " + quoted(dir.string()) +
+                          " && exec env ASAN_OPTIONS=detect_leaks=0 timeout 300 mpirun --oversubscribe -np " + std::to_string(ranks) +
                           " " + quoted(COLLIDESCOPE_BIN);
     for (const std::string& arg : args) {
         command += ' ';

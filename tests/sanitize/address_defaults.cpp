@@ -36,16 +36,7 @@ __attribute__((visibility("default"))) const char* __lsan_default_suppressions()
            // assimp 5.2 (Debian) loses two objects (1,320 and 1,144 bytes, allocated inside
            // libassimp) when its STL loader throws on a malformed file; we hold only an
            // Assimp::Importer, destroyed normally (ErrorTable "other formats (assimp)").
-           "leak:libassimp\n"
-           // Open MPI 4.1 (Debian) keeps its runtime's state (its PMIx client, hwloc topology,
-           // libevent bases, component registries) past MPI_Finalize in the frame-parallel
-           // runs (app/ranks/ranks_mpi.cpp); none of it is memory we allocate.
-           "leak:libmpi.so\n"
-           "leak:libopen-pal.so\n"
-           "leak:libopen-rte.so\n"
-           "leak:libpmix.so\n"
-           "leak:libhwloc.so\n"
-           "leak:libevent\n";
+           "leak:libassimp\n";
 }
 
 // Quiet about the suppression when it matched: the end-to-end tests read the app's stderr.
