@@ -42,6 +42,19 @@ def corpus_files(models):
     return sorted(files)
 
 
+def missing_corpus(models):
+    """None when the corpus directory exists; else the exit code after saying why: a skip (77)
+    on a developer's machine, a failure under CI (env CI=true)."""
+    if os.path.isdir(models):
+        return None
+    message = "%s: no such directory (Debian's assimp-testmodels; scripts/setup.sh installs it)" % models
+    if os.environ.get("CI") == "true":
+        print("FAIL: CI: " + message, file=sys.stderr)
+        return 1
+    print("SKIP: " + message, file=sys.stderr)
+    return SKIP
+
+
 def run_one(binary, path, timeout):
     """(path, outcome, seconds, detail): outcome is loaded, refused or a failure's kind."""
     start = time.monotonic()
@@ -84,13 +97,9 @@ def main():
     parser.add_argument("--summary", action="store_true")
     args = parser.parse_args()
 
-    if not os.path.isdir(args.models):
-        message = "%s: no such directory (Debian's assimp-testmodels; scripts/setup.sh installs it)" % args.models
-        if os.environ.get("CI") == "true":
-            print("FAIL: CI: " + message, file=sys.stderr)
-            return 1
-        print("SKIP: " + message, file=sys.stderr)
-        return SKIP
+    missing = missing_corpus(args.models)
+    if missing is not None:
+        return missing
     index, count = (int(part) for part in args.shard.split("/"))
     files = corpus_files(args.models)[index::count]
     if not files:

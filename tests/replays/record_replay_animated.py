@@ -35,8 +35,9 @@ import tempfile
 import h5py
 import numpy
 
-SKIP = 77
-DEFAULT_MODELS = "/usr/share/assimp/models"
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "mesh"))
+from check_model_corpus import DEFAULT_MODELS, corpus_files, missing_corpus  # noqa: E402
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REFUSED = {"X/anim_test.x": "names no node"}
 
@@ -132,9 +133,6 @@ def run_one(binary, models, model, timeout):
 
 
 def discover(binary, models, jobs):
-    sys.path.insert(0, os.path.join(os.path.dirname(HERE), "mesh"))
-    from check_model_corpus import corpus_files  # noqa: E402
-
     def frames_of(path):
         work = tempfile.mkdtemp(prefix="collidescope_discover_")
         try:
@@ -164,13 +162,9 @@ def main():
     parser.add_argument("--discover", action="store_true")
     args = parser.parse_args()
 
-    if not os.path.isdir(args.models):
-        message = "%s: no such directory (Debian's assimp-testmodels; scripts/setup.sh installs it)" % args.models
-        if os.environ.get("CI") == "true":
-            print("FAIL: CI: " + message, file=sys.stderr)
-            return 1
-        print("SKIP: " + message, file=sys.stderr)
-        return SKIP
+    missing = missing_corpus(args.models)
+    if missing is not None:
+        return missing
     if args.discover:
         discover(args.binary, args.models, args.jobs)
         return 0

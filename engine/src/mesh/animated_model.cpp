@@ -359,21 +359,8 @@ private:
 AnimatedModel read_animated_model(const std::filesystem::path& file, bool only_if_animated) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(file, error)) throw InputError(file.string() + ": no such file");
-    // The same guards as read_with_assimp (mesh/assimp_checks.hpp): counts against the file's
-    // size before assimp allocates them, std::cerr silent while it parses, and the scene's
-    // pointers checked before anything walks them.
-    check_counts_fit(file);
     Assimp::Importer importer;
-    const aiScene* scene = nullptr;
-    {
-        const QuietCerr quiet;
-        scene = importer.ReadFile(file.string(), 0);
-    }
-    if (scene == nullptr) {
-        throw InputError(file.string() + ": assimp cannot read it (" + importer.GetErrorString() + ")");
-    }
-    validate_assimp_scene(*scene, file);
-    return ModelReader(*scene, file).read(only_if_animated);
+    return ModelReader(import_checked(importer, file), file).read(only_if_animated);
 }
 
 }  // namespace collidescope::animation

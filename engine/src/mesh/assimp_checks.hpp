@@ -11,6 +11,9 @@
 #include <filesystem>
 
 struct aiScene;
+namespace Assimp {
+class Importer;
+}
 
 namespace collidescope {
 
@@ -24,6 +27,11 @@ void check_counts_fit(const std::filesystem::path& file);
 /// node mesh references are in range and the node graph is a tree. Throws InputError
 /// "FILE: assimp returned a broken scene: ELEMENT ...".
 void validate_assimp_scene(const aiScene& scene, const std::filesystem::path& file);
+
+/// Imports `file` (a `.gz` gunzipped first) with every check above: counts before assimp
+/// allocates, std::cerr silent while it parses, the scene validated before it is returned.
+/// The scene lives as long as `importer`. Throws InputError naming the file.
+const aiScene& import_checked(Assimp::Importer& importer, const std::filesystem::path& file);
 
 /// Silences std::cerr while it lives (assimp's bundled OpenDDL parser writes to it). Guards
 /// nest and may live on several threads; the stream is restored when the last one ends.

@@ -140,9 +140,8 @@ const aiScene* import_scene(Assimp::Importer& importer, const std::filesystem::p
 
 }  // namespace
 
-MeshData read_with_assimp(const std::filesystem::path& file) {
+const aiScene& import_checked(Assimp::Importer& importer, const std::filesystem::path& file) {
     check_counts_fit(file);
-    Assimp::Importer importer;
     const aiScene* scene = nullptr;
     {
         const QuietCerr quiet;
@@ -152,7 +151,12 @@ MeshData read_with_assimp(const std::filesystem::path& file) {
         throw InputError(file.string() + ": assimp cannot read it (" + importer.GetErrorString() + ")");
     }
     validate_assimp_scene(*scene, file);
-    return SceneFlattener(*scene, file).flatten();
+    return *scene;
+}
+
+MeshData read_with_assimp(const std::filesystem::path& file) {
+    Assimp::Importer importer;
+    return SceneFlattener(import_checked(importer, file), file).flatten();
 }
 
 }  // namespace collidescope
