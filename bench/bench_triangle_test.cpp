@@ -81,7 +81,7 @@ void self_adjacent(benchmark::State& state) {
         }
     std::vector<std::pair<std::uint32_t, std::uint32_t>> adjacent;
     for (std::uint32_t i = 0; i < t.size(); ++i)
-        for (std::uint32_t j = i + 1; j < std::min<std::uint32_t>(t.size(), i + 4 * n); ++j)
+        for (std::uint32_t j = i + 1; j < std::min<std::uint32_t>(static_cast<std::uint32_t>(t.size()), i + 4 * n); ++j)
             for (auto vi : t[i])
                 if (vi == t[j][0] || vi == t[j][1] || vi == t[j][2]) {
                     adjacent.emplace_back(i, j);

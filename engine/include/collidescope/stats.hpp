@@ -106,7 +106,9 @@ inline std::string rebuild_reason_names(std::uint8_t reasons) {
     const std::pair<std::uint8_t, const char*> bits[] = {{k_rebuild_initial, "initial"},
         {k_rebuild_topology, "topology"}, {k_rebuild_thesis, "thesis"}, {k_rebuild_quality, "quality"}};
     for (const auto& [bit, name] : bits) {
-        if ((reasons & bit) != 0) names += (names.empty() ? "" : ",") + std::string(name);
+        if ((reasons & bit) == 0) continue;
+        if (!names.empty()) names += ',';
+        names += name;
     }
     return names;
 }

@@ -155,7 +155,8 @@ int determinant3_sign_exact_entries(const double r[3][3]) {
         const int n = exact::sum(p, 2, q, 2, minor);
         counts[k] = exact::scale(minor, n, r[0][k], terms[k]);
     }
-    double partial[16], total[24];
+    // Zeroed only to quiet GCC 12's maybe-uninitialized: sum() never reads past its count.
+    double partial[16] = {}, total[24];
     const int n01 = exact::sum(terms[0], counts[0], terms[1], counts[1], partial);
     const int n = exact::sum(partial, n01, terms[2], counts[2], total);
     return exact::sign(total, n);
@@ -175,7 +176,7 @@ int determinant3_sign_expansion_entries(const double e[3][3][2]) {
         const int n = exact::sum(p, np, q, nq, minor);
         counts[k] = exact::product(minor, n, e[0][k], 2, terms[k], scratch);
     }
-    double partial[128], total[192];
+    double partial[128] = {}, total[192];  // zeroed as above
     const int n01 = exact::sum(terms[0], counts[0], terms[1], counts[1], partial);
     const int n = exact::sum(partial, n01, terms[2], counts[2], total);
     return exact::sign(total, n);
