@@ -108,7 +108,8 @@ void ObjectTrees::apply_policy(const Frame& frame, std::span<const std::uint32_t
                                AabbFrameInfo& info) {
     double rebuild_ms = 0;  // the thesis's "rebuild": every hierarchy in use
     for (const std::uint32_t object : used) rebuild_ms += m_trees[object].build_ms;
-    std::vector<std::uint32_t> chosen;
+    const bool background = m_config.background != BackgroundMode::Off;
+    std::vector<std::uint32_t> in_frame, to_worker;
     RebuildReason reason = RebuildReason::None;
     for (const std::uint32_t object : used) {
         const ObjectTree& slot = m_trees[object];
@@ -116,16 +117,15 @@ void ObjectTrees::apply_policy(const Frame& frame, std::span<const std::uint32_t
         const RebuildReason decided = m_policy.decide({true, false, slot.quality, detection_ms, rebuild_ms});
         if (decided == RebuildReason::None) continue;
         reason = decided;
-        chosen.push_back(object);
+        const bool too_degraded = slot.quality > m_policy.config().in_frame_quality;
+        (background && !too_degraded ? to_worker : in_frame).push_back(object);
     }
-    if (chosen.empty()) return;
-    if (m_config.background == BackgroundMode::Off) {
-        build(frame, chosen);
-        info.rebuilt_objects += static_cast<std::uint32_t>(chosen.size());
-    } else {
-        if (m_background.busy()) return;  // one batch at a time; asked again next frame
-        hand_to_worker(frame, chosen, reason, info);
+    if (in_frame.empty() && (to_worker.empty() || m_background.busy())) return;  // worker: one batch at a time
+    if (!in_frame.empty()) {
+        build(frame, in_frame);
+        info.rebuilt_objects += static_cast<std::uint32_t>(in_frame.size());
     }
+    if (!to_worker.empty() && !m_background.busy()) hand_to_worker(frame, to_worker, reason, info);
     info.rebuild_reasons |= bit(reason);
 }
 
