@@ -4,8 +4,9 @@
 # the self rule, bench/peers/bench_embree_cgal_peers) and FCL, on the cloth family at the large
 # preset (self-collision on) and the thesis data sets at the default preset (objects only, as
 # bench_bvh_peers, and again with self-collision on); then `check --stats` on every frame of
-# the cloth scenes for exact_fallbacks per exact test. Three frames per scene (first, middle,
-# last), the same for every method, after one untimed warm-up frame. FCL is timed on the first
+# the cloth scenes for exact_fallbacks per exact test. Five frames per scene, spread evenly from
+# the first to the last, the same for every method, after one untimed warm-up frame (the first
+# of them). FCL is timed on the first
 # of them only (it takes seconds per frame).
 # Usage: scripts/peers_cloth.sh BUILD_DIR OUT_DIR   (BUILD_DIR built with COLLIDESCOPE_BENCH=ON
 #        and the targets bench_embree_cgal_peers, collidescope). Writes OUT_DIR/peers.jsonl,

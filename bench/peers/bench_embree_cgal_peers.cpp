@@ -5,7 +5,8 @@
 // (objects only: FCL has no self-collision). One scene per run, on chosen frames; every
 // method sees the same frames in the same order, after one warm-up frame (the first chosen
 // frame: builds the trees) that is not timed. Prints one JSON object per run on stdout (ms
-// per frame are means over the timed frames) and checks that the peer's pairs equal the
+// per frame are means over the timed frames; narrow_split: the narrow phases' time per frame on the
+// candidates that share a vertex index against the others, one thread, untimed elsewhere) and checks that the peer's pairs equal the
 // `aabb` method's on every timed frame (counts of extra and missed pairs, never hidden).
 //
 //   build/bench/bench_embree_cgal_peers --scene cloth-rest:large [--self on|off|scene]
@@ -42,7 +43,7 @@ using namespace collidescope::peers;
 struct Options {
     std::string scene = "cloth-rest:large";
     std::string self = "on";               // on, off, or the scene's default
-    std::vector<std::uint32_t> frames;     // empty: 3 frames spread over the animation
+    std::vector<std::uint32_t> frames;     // empty: 5 frames spread over the animation
     std::vector<int> threads = {1, 2};     // thread counts of the `aabb` runs
     bool fcl = true;
     std::size_t fcl_frames = 0;            // > 0: FCL on the first this many timed frames only
@@ -77,6 +78,8 @@ Options parse(int argc, char** argv) {
     }
     return options;
 }
+
+volatile std::size_t benchmark_sink = 0;  // keeps timed loops from being optimised away
 
 std::vector<std::uint32_t> spread_frames(std::uint32_t count, std::uint32_t wanted) {
     std::vector<std::uint32_t> out;
@@ -165,6 +168,57 @@ PeerRun run_peer(const std::vector<Frame>& frames, bool self, const std::vector<
     return run;
 }
 
+/// Where the narrow phases' time goes, per timed frame (means; untimed in the table):
+/// candidates within one object that share a vertex index (always box-overlapping, decided by
+/// the self rule) against the rest, each set run sequentially through the engine's exact test
+/// (common/narrow_phase.hpp, one thread) and the peer's.
+struct AdjacentSplit {
+    std::size_t adjacent = 0, other = 0;
+    double engine_adjacent_ms = 0, engine_other_ms = 0, cgal_adjacent_ms = 0, cgal_other_ms = 0;
+};
+
+bool shares_index(const Frame& frame, const TrianglePair& pair) {
+    if (pair.obj_a != pair.obj_b) return false;
+    const auto& triangles = frame.objects[pair.obj_a].topology->triangles;
+    const TriIndices& a = triangles[pair.tri_a];
+    const TriIndices& b = triangles[pair.tri_b];
+    for (std::uint32_t i : a)
+        if (i == b[0] || i == b[1] || i == b[2]) return true;
+    return false;
+}
+
+void split_adjacent(const Frame& frame, bool self, AdjacentSplit& split) {
+    EmbreePeer embree;
+    embree.update(frame);
+    PairSet adjacent, other;
+    for (const TrianglePair& pair : embree.candidates(object_pairs(frame, self)))
+        (shares_index(frame, pair) ? adjacent : other).push_back(pair);
+    const auto time = [&](const PairSet& pairs, auto&& test) {
+        const Clock::time_point start = Clock::now();
+        std::size_t hits = 0;
+        for (const TrianglePair& pair : pairs) hits += test(frame, pair) ? 1 : 0;
+        benchmark_sink = hits;
+        return ms_since(start);
+    };
+    split.adjacent += adjacent.size();
+    split.other += other.size();
+    split.engine_adjacent_ms += time(adjacent, pair_collides);
+    split.engine_other_ms += time(other, pair_collides);
+    split.cgal_adjacent_ms += time(adjacent, cgal_pair_collides);
+    split.cgal_other_ms += time(other, cgal_pair_collides);
+}
+
+AdjacentSplit split_adjacent(const std::vector<Frame>& frames, bool self) {
+    AdjacentSplit split;
+    for (const Frame& frame : frames) split_adjacent(frame, self, split);
+    const std::size_t n = frames.size();
+    split.adjacent /= n;
+    split.other /= n;
+    for (double* x : {&split.engine_adjacent_ms, &split.engine_other_ms, &split.cgal_adjacent_ms, &split.cgal_other_ms})
+        *x /= static_cast<double>(n);
+    return split;
+}
+
 /// FCL between objects: ms per frame, its pairs, and its differences from the exact pairs
 /// between objects. Null when the scene has no pair of distinct objects in the timed frames.
 struct FclRun {
@@ -235,7 +289,7 @@ int run(const Options& options) {
     const Scene scene = make_builtin_scene(options.scene);
     const bool self = options.self == "scene" ? scene.self_collision : options.self == "on";
     const std::uint32_t count = scene.source->frame_count();
-    const std::vector<std::uint32_t> indices = options.frames.empty() ? spread_frames(count, 3) : options.frames;
+    const std::vector<std::uint32_t> indices = options.frames.empty() ? spread_frames(count, 5) : options.frames;
     std::vector<Frame> frames;
     std::size_t triangles = 0;
     for (std::uint32_t f : indices) frames.push_back(scene.source->frame(f));
@@ -250,6 +304,7 @@ int run(const Options& options) {
         else if (pairs != exact) std::cerr << "warning: aabb's pairs differ between thread counts\n";
     }
     const PeerRun peer = run_peer(frames, self, exact);
+    const AdjacentSplit split = split_adjacent(frames, self);
     const bool has_objects = frames.front().objects.size() > 1;
     std::string fcl = "null";
     if (options.fcl && has_objects) {
@@ -267,10 +322,13 @@ int run(const Options& options) {
     for (const OursRun& r : ours) ours_json += (ours_json.empty() ? "" : ", ") + json_ours(r);
     std::printf("{\"scene\": \"%s\", \"self\": %s, \"triangles\": %zu, \"frames\": [%s], \"aabb\": [%s], "
                 "\"peer\": {\"ms\": %.3f, \"refit_ms\": %.3f, \"collide_ms\": %.3f, \"narrow_ms\": %.3f, "
-                "\"embree_candidates\": %.0f, \"colliding\": %.0f, \"extra\": %zu, \"missed\": %zu, \"repeated\": %zu}, \"fcl\": %s}\n",
+                "\"embree_candidates\": %.0f, \"colliding\": %.0f, \"extra\": %zu, \"missed\": %zu, \"repeated\": %zu}, \"fcl\": %s, "
+                "\"narrow_split\": {\"adjacent\": %zu, \"other\": %zu, \"engine_adjacent_ms\": %.3f, "
+                "\"engine_other_ms\": %.3f, \"cgal_adjacent_ms\": %.3f, \"cgal_other_ms\": %.3f}}\n",
                 options.scene.c_str(), self ? "true" : "false", triangles, frame_list.c_str(), ours_json.c_str(),
                 peer.total_ms, peer.refit_ms, peer.collide_ms, peer.narrow_ms, peer.candidates, peer.colliding,
-                peer.extra, peer.missed, peer.repeated, fcl.c_str());
+                peer.extra, peer.missed, peer.repeated, fcl.c_str(), split.adjacent, split.other,
+                split.engine_adjacent_ms, split.engine_other_ms, split.cgal_adjacent_ms, split.cgal_other_ms);
     return peer.extra + peer.missed + peer.repeated == 0 ? 0 : 2;
 }
 
