@@ -6,8 +6,8 @@
 # bench_bvh_peers, and again with self-collision on); then `check --stats` on every frame of
 # the cloth scenes for exact_fallbacks per exact test. Five frames per scene, spread evenly from
 # the first to the last, the same for every method, after one untimed warm-up frame (the first
-# of them). FCL is timed on the first
-# of them only (it takes seconds per frame).
+# of them). FCL is timed on the first of them only (it takes seconds per frame). Data set E
+# needs the Stanford dragon: set COLLIDESCOPE_DATA when it is not in the repository's data/.
 # Usage: scripts/peers_cloth.sh BUILD_DIR OUT_DIR   (BUILD_DIR built with COLLIDESCOPE_BENCH=ON
 #        and the targets bench_embree_cgal_peers, collidescope). Writes OUT_DIR/peers.jsonl,
 #        OUT_DIR/stats-*.jsonl, OUT_DIR/load.txt, OUT_DIR/machine.txt and the table on stdout.

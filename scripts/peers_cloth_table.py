@@ -58,6 +58,18 @@ def main(out):
         print(f'| {r["scene"]} | {"on" if r["self"] else "off"} | {a["refit_ms"]:,.1f} | {a["rebuild_ms"]:,.1f} '
               f'| {a["traversal_ms"]:,.1f} | {a["narrow_ms"]:,.1f} | {a["ms"]:,.1f} | {a["exact_tests"]:,.0f} | {per:.4f} |')
     print()
+    print("The exact tests alone, one thread, per frame (ms), on the Embree candidates that share a vertex index")
+    print("(adjacent, within one object) and on the others:")
+    print()
+    print("| scene | self | adjacent | aabb's test | CGAL peer's | others | aabb's test | CGAL peer's |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- |")
+    for r in runs:
+        x = r.get("narrow_split")
+        if not x:
+            continue
+        print(f'| {r["scene"]} | {"on" if r["self"] else "off"} | {x["adjacent"]:,} | {x["engine_adjacent_ms"]:,.1f} '
+              f'| {x["cgal_adjacent_ms"]:,.1f} | {x["other"]:,} | {x["engine_other_ms"]:,.1f} | {x["cgal_other_ms"]:,.1f} |')
+    print()
     cloth = [r for r in runs if r["scene"].startswith("cloth")]
     thesis_off = [r for r in runs if not r["scene"].startswith("cloth") and not r["self"]]
     thesis_on = [r for r in runs if not r["scene"].startswith("cloth") and r["self"]]
