@@ -10,7 +10,8 @@
 # needs the Stanford dragon: set COLLIDESCOPE_DATA when it is not in the repository's data/.
 # Usage: scripts/peers_cloth.sh BUILD_DIR OUT_DIR   (BUILD_DIR built with COLLIDESCOPE_BENCH=ON
 #        and the targets bench_embree_cgal_peers, collidescope). Writes OUT_DIR/peers.jsonl,
-#        OUT_DIR/stats-*.jsonl, OUT_DIR/load.txt, OUT_DIR/machine.txt and the table on stdout.
+#        OUT_DIR/peers-low.jsonl, OUT_DIR/stats-*.jsonl, OUT_DIR/load.txt, OUT_DIR/machine.txt,
+#        and the tables on stdout.
 set -euo pipefail
 build=$(realpath "$1")
 out=$2
@@ -21,6 +22,7 @@ here=$(dirname "$(realpath "${BASH_SOURCE[0]}")")
 
 { date -u; uptime; echo "cores: $(nproc)"; free -g | head -2; git -C "$here" rev-parse HEAD; } > "$out/machine.txt"
 : > "$out/peers.jsonl"
+: > "$out/peers-low.jsonl"
 : > "$out/load.txt"
 
 note() { echo "$(date -u +%T) load $(cut -d' ' -f1-3 /proc/loadavg): $*" | tee -a "$out/load.txt" >&2; }
@@ -39,6 +41,13 @@ for scene in cloth-rest cloth-drape cloth-crumple cloth-slide; do
 done
 for scene in A B C D E1 E2 E3 E4; do peer --scene "$scene" --self off --fcl-frames 1; done
 for scene in A B C D E1 E2 E3 E4; do peer --scene "$scene" --self on --no-fcl; done
+# The peer with Embree building its trees again every frame (RTC_BUILD_QUALITY_LOW) instead of
+# refitting them (DESIGN.md: compare both modes), cloth scenes, against aabb at 2 threads.
+for scene in cloth-rest cloth-drape cloth-crumple cloth-slide; do
+  note "bench_embree_cgal_peers --scene $scene:large --embree-build low"
+  "$bench" --scene "$scene:large" --self on --threads 2 --no-fcl --no-split --embree-build low \
+    >> "$out/peers-low.jsonl" || note "exit $?"
+done
 
 for scene in cloth-rest cloth-drape cloth-crumple cloth-slide; do
   note "collidescope check --scene $scene:large --method aabb --self --threads 2 --stats"

@@ -8,8 +8,11 @@ import os
 import sys
 
 
-def load(out):
-    with open(os.path.join(out, "peers.jsonl")) as f:
+def load(out, name="peers.jsonl"):
+    path = os.path.join(out, name)
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
         return [json.loads(line) for line in f if line.strip()]
 
 
@@ -80,6 +83,18 @@ def main(out):
             below = [f'{r["scene"]} {ratio(r):.2f}x' for r in group if ratio(r) < 3]
             print(f"aabb {threads} thr, {label}: geometric mean {geomean(ratios):.2f}x (target >= 10x); "
                   f"scenes under 3x: {', '.join(below) if below else 'none'}")
+    low = load(out, "peers-low.jsonl")
+    if low:
+        print()
+        print("The peer with Embree rebuilding every frame (RTC_BUILD_QUALITY_LOW) instead of refitting, cloth scenes:")
+        print()
+        print("| scene | aabb 2 thr ms | peer (low) ms (refit / collide / narrow) | peer (low) / aabb | differs (extra/missed) |")
+        print("| --- | --- | --- | --- | --- |")
+        for r in low:
+            a = {x["threads"]: x for x in r["aabb"]}[2]
+            p = r["peer"]
+            print(f'| {r["scene"]} | {a["ms"]:,.1f} | {p["ms"]:,.1f} ({p["refit_ms"]:,.0f} / {p["collide_ms"]:,.0f} / {p["narrow_ms"]:,.0f}) '
+                  f'| {p["ms"] / a["ms"]:.2f}x | {p["extra"]}/{p["missed"]} |')
     print()
     print("check --stats, every frame, 2 threads: exact_fallbacks per exact test (target <= 0.1)")
     print()

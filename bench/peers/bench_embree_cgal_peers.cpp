@@ -10,7 +10,8 @@
 // `aabb` method's on every timed frame (counts of extra and missed pairs, never hidden).
 //
 //   build/bench/bench_embree_cgal_peers --scene cloth-rest:large [--self on|off|scene]
-//       [--frames 0,3,7] [--threads 1,2] [--no-fcl | --fcl-frames K]
+//       [--frames 0,3,7] [--threads 1,2] [--no-fcl | --fcl-frames K] [--embree-build refit|low|medium]
+//       [--no-split]
 //   build/bench/bench_embree_cgal_peers --check-rule 1000000
 //       (the peer's exact test against the engine's on random pairs of one object whose
 //       corners lie on a 3x3x3 grid, with shared indices: degenerate, coplanar, touching)
@@ -46,6 +47,8 @@ struct Options {
     std::vector<std::uint32_t> frames;     // empty: 5 frames spread over the animation
     std::vector<int> threads = {1, 2};     // thread counts of the `aabb` runs
     bool fcl = true;
+    RTCBuildQuality embree_quality = RTC_BUILD_QUALITY_REFIT;  // --embree-build refit|low|medium
+    bool split = true;                     // --no-split: skip narrow_split
     std::size_t fcl_frames = 0;            // > 0: FCL on the first this many timed frames only
     std::uint64_t check_rule = 0;          // > 0: only compare the exact tests on this many pairs
 };
@@ -72,6 +75,11 @@ Options parse(int argc, char** argv) {
             options.threads.clear();
             for (std::uint32_t t : parse_list(value())) options.threads.push_back(static_cast<int>(t));
         } else if (arg == "--no-fcl") options.fcl = false;
+        else if (arg == "--embree-build") {
+            const std::string v = value();
+            options.embree_quality = v == "low" ? RTC_BUILD_QUALITY_LOW : v == "medium" ? RTC_BUILD_QUALITY_MEDIUM : RTC_BUILD_QUALITY_REFIT;
+            if (v != "low" && v != "medium" && v != "refit") throw std::invalid_argument("--embree-build: refit, low or medium");
+        } else if (arg == "--no-split") options.split = false;
         else if (arg == "--fcl-frames") options.fcl_frames = std::stoul(value());
         else if (arg == "--check-rule") options.check_rule = std::stoull(value());
         else throw std::invalid_argument("unknown argument " + arg);
@@ -136,8 +144,9 @@ std::vector<ObjectPair> object_pairs(const Frame& frame, bool self) {
     return find_object_pairs(compute_object_boxes(frame), self);
 }
 
-PeerRun run_peer(const std::vector<Frame>& frames, bool self, const std::vector<PairSet>& exact) {
-    EmbreePeer embree;
+PeerRun run_peer(const std::vector<Frame>& frames, bool self, const std::vector<PairSet>& exact,
+                 RTCBuildQuality quality) {
+    EmbreePeer embree(quality);
     embree.update(frames.front());  // warm-up: builds the trees
     PeerRun run;
     for (std::size_t f = 0; f < frames.size(); ++f) {
@@ -303,8 +312,8 @@ int run(const Options& options) {
         if (exact.empty()) exact = std::move(pairs);
         else if (pairs != exact) std::cerr << "warning: aabb's pairs differ between thread counts\n";
     }
-    const PeerRun peer = run_peer(frames, self, exact);
-    const AdjacentSplit split = split_adjacent(frames, self);
+    const PeerRun peer = run_peer(frames, self, exact, options.embree_quality);
+    const AdjacentSplit split = options.split ? split_adjacent(frames, self) : AdjacentSplit{};
     const bool has_objects = frames.front().objects.size() > 1;
     std::string fcl = "null";
     if (options.fcl && has_objects) {
@@ -320,12 +329,14 @@ int run(const Options& options) {
     for (std::uint32_t f : indices) frame_list += (frame_list.empty() ? "" : ", ") + std::to_string(f);
     std::string ours_json;
     for (const OursRun& r : ours) ours_json += (ours_json.empty() ? "" : ", ") + json_ours(r);
-    std::printf("{\"scene\": \"%s\", \"self\": %s, \"triangles\": %zu, \"frames\": [%s], \"aabb\": [%s], "
+    const char* quality = options.embree_quality == RTC_BUILD_QUALITY_LOW ? "low"
+                          : options.embree_quality == RTC_BUILD_QUALITY_MEDIUM ? "medium" : "refit";
+    std::printf("{\"scene\": \"%s\", \"embree_build\": \"%s\", \"self\": %s, \"triangles\": %zu, \"frames\": [%s], \"aabb\": [%s], "
                 "\"peer\": {\"ms\": %.3f, \"refit_ms\": %.3f, \"collide_ms\": %.3f, \"narrow_ms\": %.3f, "
                 "\"embree_candidates\": %.0f, \"colliding\": %.0f, \"extra\": %zu, \"missed\": %zu, \"repeated\": %zu}, \"fcl\": %s, "
                 "\"narrow_split\": {\"adjacent\": %zu, \"other\": %zu, \"engine_adjacent_ms\": %.3f, "
                 "\"engine_other_ms\": %.3f, \"cgal_adjacent_ms\": %.3f, \"cgal_other_ms\": %.3f}}\n",
-                options.scene.c_str(), self ? "true" : "false", triangles, frame_list.c_str(), ours_json.c_str(),
+                options.scene.c_str(), quality, self ? "true" : "false", triangles, frame_list.c_str(), ours_json.c_str(),
                 peer.total_ms, peer.refit_ms, peer.collide_ms, peer.narrow_ms, peer.candidates, peer.colliding,
                 peer.extra, peer.missed, peer.repeated, fcl.c_str(), split.adjacent, split.other,
                 split.engine_adjacent_ms, split.engine_other_ms, split.cgal_adjacent_ms, split.cgal_other_ms);

@@ -64,7 +64,10 @@ inline void embree_collide(void* user, RTCCollision* collisions, unsigned int co
 
 class EmbreePeer {
 public:
-    EmbreePeer() : m_device(rtcNewDevice(nullptr)) {}
+    /// `quality`: RTC_BUILD_QUALITY_REFIT (the default: refit every frame) or a build quality
+    /// (RTC_BUILD_QUALITY_LOW, MEDIUM: the tree is built again every frame).
+    explicit EmbreePeer(RTCBuildQuality quality = RTC_BUILD_QUALITY_REFIT)
+        : m_device(rtcNewDevice(nullptr)), m_quality(quality) {}
     ~EmbreePeer() {
         release();
         rtcReleaseDevice(m_device);
@@ -119,13 +122,15 @@ private:
             rtcSetGeometryUserPrimitiveCount(object.geometry, static_cast<unsigned>(frame.objects[o].triangle_count()));
             rtcSetGeometryUserData(object.geometry, &object);
             rtcSetGeometryBoundsFunction(object.geometry, &embree_bounds, nullptr);
-            rtcSetGeometryBuildQuality(object.geometry, RTC_BUILD_QUALITY_REFIT);
+            rtcSetGeometryBuildQuality(object.geometry, m_quality);
+            if (m_quality != RTC_BUILD_QUALITY_REFIT) rtcSetSceneBuildQuality(object.scene, m_quality);
             rtcAttachGeometry(object.scene, object.geometry);
             rtcReleaseGeometry(object.geometry);
         }
     }
 
     RTCDevice m_device;
+    RTCBuildQuality m_quality;
     std::vector<EmbreeObject> m_objects;
     std::vector<std::uint64_t> m_revisions;
 };
