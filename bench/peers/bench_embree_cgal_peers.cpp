@@ -4,14 +4,17 @@
 // (peers/cgal_narrow_phase.hpp); beside the `aabb` method at several thread counts and FCL
 // (objects only: FCL has no self-collision). One scene per run, on chosen frames; every
 // method sees the same frames in the same order, after one warm-up frame (the first chosen
-// frame: builds the trees) that is not timed. Prints one JSON object per run on stdout (ms
-// per frame are means over the timed frames; narrow_split: the narrow phases' time per frame on the
-// candidates that share a vertex index against the others, one thread, untimed elsewhere) and checks that the peer's pairs equal the
-// `aabb` method's on every timed frame (counts of extra and missed pairs, never hidden).
+// frame: builds the trees) that is not timed.
+//
+// Prints one JSON object per run on stdout: ms per frame are means over the timed frames;
+// narrow_split is each exact test's time alone, one thread, on the candidates that share a
+// vertex index and on the others (untimed elsewhere). Checks that the peer's pairs equal the
+// `aabb` method's on every timed frame: counts of extra and missed pairs, never hidden (exit
+// status 2 when any).
 //
 //   build/bench/bench_embree_cgal_peers --scene cloth-rest:large [--self on|off|scene]
-//       [--frames 0,3,7] [--threads 1,2] [--no-fcl | --fcl-frames K] [--embree-build refit|low|medium]
-//       [--no-split]
+//       [--frames 0,3,7] [--threads 1,2] [--no-fcl | --fcl-frames K]
+//       [--embree-build refit|low|medium] [--no-split]
 //   build/bench/bench_embree_cgal_peers --check-rule 1000000
 //       (the peer's exact test against the engine's on random pairs of one object whose
 //       corners lie on a 3x3x3 grid, with shared indices: degenerate, coplanar, touching)
@@ -77,8 +80,11 @@ Options parse(int argc, char** argv) {
         } else if (arg == "--no-fcl") options.fcl = false;
         else if (arg == "--embree-build") {
             const std::string v = value();
-            options.embree_quality = v == "low" ? RTC_BUILD_QUALITY_LOW : v == "medium" ? RTC_BUILD_QUALITY_MEDIUM : RTC_BUILD_QUALITY_REFIT;
-            if (v != "low" && v != "medium" && v != "refit") throw std::invalid_argument("--embree-build: refit, low or medium");
+            if (v != "low" && v != "medium" && v != "refit")
+                throw std::invalid_argument("--embree-build: refit, low or medium");
+            options.embree_quality = v == "low"      ? RTC_BUILD_QUALITY_LOW
+                                     : v == "medium" ? RTC_BUILD_QUALITY_MEDIUM
+                                                     : RTC_BUILD_QUALITY_REFIT;
         } else if (arg == "--no-split") options.split = false;
         else if (arg == "--fcl-frames") options.fcl_frames = std::stoul(value());
         else if (arg == "--check-rule") options.check_rule = std::stoull(value());
@@ -282,8 +288,10 @@ int check_rule(std::uint64_t pairs) {
     frame.objects.push_back({topology, std::vector<Vec3>(6)});
     std::uint64_t differ = 0, hits = 0;
     for (std::uint64_t k = 0; k < pairs; ++k) {
-        for (Vec3& v : frame.objects[0].vertices) v = Vec3(coordinate(random), coordinate(random), coordinate(random));
-        for (TriIndices& t : topology->triangles) t = {std::uint32_t(index(random)), std::uint32_t(index(random)), std::uint32_t(index(random))};
+        for (Vec3& v : frame.objects[0].vertices)
+            v = Vec3(coordinate(random), coordinate(random), coordinate(random));
+        const auto corner = [&] { return static_cast<std::uint32_t>(index(random)); };
+        for (TriIndices& t : topology->triangles) t = {corner(), corner(), corner()};
         const TrianglePair pair{0, 0, 0, 1};
         const bool ours = pair_collides(frame, pair);
         hits += ours;
