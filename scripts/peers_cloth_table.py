@@ -88,7 +88,7 @@ def main(out):
         print()
         print("The peer with Embree rebuilding every frame (RTC_BUILD_QUALITY_LOW) instead of refitting, cloth scenes:")
         print()
-        print("| scene | aabb 2 thr ms | peer (low) ms (refit / collide / narrow) | peer (low) / aabb | differs (extra/missed) |")
+        print("| scene | aabb 2 thr ms | peer (low) ms (rebuild / collide / narrow) | peer (low) / aabb | differs (extra/missed) |")
         print("| --- | --- | --- | --- | --- |")
         for r in low:
             a = {x["threads"]: x for x in r["aabb"]}[2]
