@@ -31,8 +31,9 @@ PACKAGES=(
   # format assimp reads, animated characters among them (/usr/share/assimp/models: the
   # Corpus.AssimpTestmodels tests and the animation tests)
   glmark2-data assimp-testmodels
-  # peers of the aabb method (bench/peers/bench_bvh_peers, built only when present)
-  libembree-dev libfcl-dev
+  # peers of the aabb method (bench/peers: bench_bvh_peers, bench_embree_cgal_peers; built
+  # only when present)
+  libembree-dev libfcl-dev libcgal-dev
   # trace scripts and their tests
   python3 python3-h5py python3-numpy python3-matplotlib
   # python module and its tests: pybind11 builds `collidescope._core` for Debian's python3

@@ -7,198 +7,21 @@
 //
 //   build-bvh/bench/bench_bvh_peers [--benchmark_filter=C]
 
+#include "peers/embree_peer.hpp"
+#include "peers/fcl_peer.hpp"
+#include "peers/peer_common.hpp"
+
 #include "methods/aabb_method.hpp"
 #include "common/object_level.hpp"
 
 #include "collidescope/datasets.hpp"
 
 #include <benchmark/benchmark.h>
-#include <embree3/rtcore.h>
-#include <fcl/fcl.h>
-
-#include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <mutex>
-#include <set>
 
 namespace {
 
 using namespace collidescope;
-using Clock = std::chrono::steady_clock;
-using PairSet = std::vector<TrianglePair>;
-
-double ms_since(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-// The objects' topology revisions: a peer rebuilds from scratch when they change (fractures).
-std::vector<std::uint64_t> revisions(const Frame& frame) {
-    std::vector<std::uint64_t> out;
-    for (const ObjectFrame& object : frame.objects) out.push_back(object.topology->revision);
-    return out;
-}
-
-// ---- Embree: one scene per object, a user geometry whose primitives are the triangles.
-struct EmbreeObject {
-    const ObjectFrame* mesh = nullptr;  // the current frame's object (bounds callback reads it)
-    RTCScene scene = nullptr;
-    RTCGeometry geometry = nullptr;
-};
-
-void embree_bounds(const RTCBoundsFunctionArguments* args) {
-    const auto* object = static_cast<const EmbreeObject*>(args->geometryUserPtr);
-    const std::array<Vec3, 3> c = object->mesh->corners(args->primID);
-    RTCBounds* b = args->bounds_o;
-    // Float boxes rounded outward (nextafter), so they contain the double box.
-    const auto lo = [&](int k) { return std::nextafter(static_cast<float>(std::min({c[0][k], c[1][k], c[2][k]})), -INFINITY); };
-    const auto hi = [&](int k) { return std::nextafter(static_cast<float>(std::max({c[0][k], c[1][k], c[2][k]})), INFINITY); };
-    b->lower_x = lo(0); b->lower_y = lo(1); b->lower_z = lo(2);
-    b->upper_x = hi(0); b->upper_y = hi(1); b->upper_z = hi(2);
-}
-
-struct EmbreeCollect {
-    std::uint32_t a = 0;
-    std::uint32_t b = 0;
-    std::mutex mutex;
-    PairSet* pairs = nullptr;
-};
-
-void embree_collide(void* user, RTCCollision* collisions, unsigned int count) {
-    auto* collect = static_cast<EmbreeCollect*>(user);
-    const std::lock_guard<std::mutex> lock(collect->mutex);
-    for (unsigned int i = 0; i < count; ++i) {
-        collect->pairs->push_back({collect->a, collisions[i].primID0, collect->b, collisions[i].primID1});
-    }
-}
-
-class EmbreePeer {
-public:
-    EmbreePeer() : m_device(rtcNewDevice(nullptr)) {}
-    ~EmbreePeer() {
-        release();
-        rtcReleaseDevice(m_device);
-    }
-    // Refit (or first build, or rebuild after a topology change) for the frame, then collide
-    // every object pair.
-    PairSet frame(const Frame& frame, std::span<const ObjectPair> object_pairs) {
-        if (m_objects.empty() || revisions(frame) != m_revisions) {
-            release();
-            create(frame);
-            m_revisions = revisions(frame);
-        }
-        for (std::size_t o = 0; o < m_objects.size(); ++o) {
-            m_objects[o].mesh = &frame.objects[o];
-            rtcCommitGeometry(m_objects[o].geometry);
-            rtcCommitScene(m_objects[o].scene);
-        }
-        PairSet pairs;
-        for (const ObjectPair& pair : object_pairs) {
-            if (pair.a == pair.b) continue;
-            EmbreeCollect collect;
-            collect.a = pair.a;
-            collect.b = pair.b;
-            collect.pairs = &pairs;
-            rtcCollide(m_objects[pair.a].scene, m_objects[pair.b].scene, &embree_collide, &collect);
-        }
-        return pairs;
-    }
-
-private:
-    void release() {
-        for (EmbreeObject& o : m_objects) rtcReleaseScene(o.scene);
-        m_objects.clear();
-    }
-
-    void create(const Frame& frame) {
-        m_objects.resize(frame.objects.size());
-        for (std::size_t o = 0; o < frame.objects.size(); ++o) {
-            EmbreeObject& object = m_objects[o];
-            object.mesh = &frame.objects[o];
-            object.scene = rtcNewScene(m_device);
-            rtcSetSceneFlags(object.scene, RTC_SCENE_FLAG_DYNAMIC);  // needed for a real refit
-            object.geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_USER);
-            rtcSetGeometryUserPrimitiveCount(object.geometry, static_cast<unsigned>(frame.objects[o].triangle_count()));
-            rtcSetGeometryUserData(object.geometry, &object);
-            rtcSetGeometryBoundsFunction(object.geometry, &embree_bounds, nullptr);
-            rtcSetGeometryBuildQuality(object.geometry, RTC_BUILD_QUALITY_REFIT);
-            rtcAttachGeometry(object.scene, object.geometry);
-            rtcReleaseGeometry(object.geometry);
-        }
-    }
-
-    RTCDevice m_device;
-    std::vector<EmbreeObject> m_objects;
-    std::vector<std::uint64_t> m_revisions;
-};
-
-// ---- FCL: one BVHModel<AABB> per object, refit bottom-up every frame.
-class FclPeer {
-public:
-    PairSet frame(const Frame& frame, std::span<const ObjectPair> object_pairs) {
-        if (m_models.empty() || revisions(frame) != m_revisions) {
-            m_models.clear();
-            m_objects.clear();
-            create(frame);
-            m_revisions = revisions(frame);
-        }
-        for (std::size_t o = 0; o < m_models.size(); ++o) {
-            m_models[o]->beginUpdateModel();
-            m_models[o]->updateSubModel(points(frame.objects[o]));
-            m_models[o]->endUpdateModel(true, true);  // refit, bottom-up
-            m_objects[o]->computeAABB();
-        }
-        PairSet pairs;
-        for (const ObjectPair& pair : object_pairs) {
-            if (pair.a == pair.b) continue;
-            fcl::CollisionRequestd request(std::numeric_limits<std::size_t>::max(), true);
-            request.num_max_contacts = std::numeric_limits<std::size_t>::max();  // exhaustive
-            fcl::CollisionResultd result;
-            fcl::collide(m_objects[pair.a].get(), m_objects[pair.b].get(), request, result);
-            for (std::size_t i = 0; i < result.numContacts(); ++i) {
-                const fcl::Contactd& contact = result.getContact(i);
-                pairs.push_back({pair.a, static_cast<std::uint32_t>(contact.b1), pair.b, static_cast<std::uint32_t>(contact.b2)});
-            }
-        }
-        return pairs;
-    }
-
-private:
-    using Model = fcl::BVHModel<fcl::AABBd>;
-
-    static std::vector<fcl::Vector3d> points(const ObjectFrame& mesh) {
-        std::vector<fcl::Vector3d> out(mesh.vertices.begin(), mesh.vertices.end());
-        return out;
-    }
-
-    void create(const Frame& frame) {
-        for (const ObjectFrame& mesh : frame.objects) {
-            auto model = std::make_shared<Model>();
-            std::vector<fcl::Triangle> triangles;
-            for (const TriIndices& t : mesh.topology->triangles) triangles.emplace_back(t[0], t[1], t[2]);
-            model->beginModel();
-            model->addSubModel(points(mesh), triangles);
-            model->endModel();
-            m_models.push_back(model);
-            m_objects.push_back(std::make_unique<fcl::CollisionObjectd>(model));
-        }
-    }
-
-    std::vector<std::shared_ptr<Model>> m_models;
-    std::vector<std::unique_ptr<fcl::CollisionObjectd>> m_objects;
-    std::vector<std::uint64_t> m_revisions;
-};
-
-// Pairs in `got` not in `exact` (extra) and in `exact` not in `got` (missed).
-std::pair<std::size_t, std::size_t> difference(PairSet got, const PairSet& exact) {
-    std::sort(got.begin(), got.end());
-    got.erase(std::unique(got.begin(), got.end()), got.end());
-    PairSet extra;
-    PairSet missed;
-    std::set_difference(got.begin(), got.end(), exact.begin(), exact.end(), std::back_inserter(extra));
-    std::set_difference(exact.begin(), exact.end(), got.begin(), got.end(), std::back_inserter(missed));
-    return {extra.size(), missed.size()};
-}
+using namespace collidescope::peers;
 
 const char* const k_sets[] = {"A", "B", "C", "D", "E1", "E2", "E3", "E4"};
 
@@ -224,7 +47,8 @@ void BM_peers(benchmark::State& state) {
             exact.erase(std::unique(exact.begin(), exact.end()), exact.end());
             ours_ms += ms_since(start);
             start = Clock::now();
-            const PairSet from_embree = embree.frame(frame, object_pairs);
+            embree.update(frame);
+            const PairSet from_embree = embree.candidates(object_pairs);
             embree_ms += ms_since(start);
             start = Clock::now();
             const PairSet from_fcl = fcl_peer.frame(frame, object_pairs);
