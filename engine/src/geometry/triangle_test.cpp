@@ -6,7 +6,9 @@
 // their boundaries cross or one contains the other, whose edges then lie inside. A
 // degenerate triangle is covered by its edges, so the same statement holds for segments and
 // points. A plane-side rejection first skips most separated pairs with four orientation
-// signs reused by the edge tests.
+// signs reused by the edge tests; coplanar pairs (flat cloth, sheets lying on each other)
+// first look for an edge whose line has the other triangle strictly outside, which
+// separates them (the 2D separating axis), before the six edge tests.
 
 #include "collidescope/geometry.hpp"
 #include "geometry/contact_tests.hpp"
@@ -17,6 +19,34 @@ namespace {
 bool strictly_one_side(const int s[3]) {
     return (s[0] > 0 && s[1] > 0 && s[2] > 0) || (s[0] < 0 && s[1] < 0 && s[2] < 0);
 }
+
+/// Some corner of (b0, b1, b2) on the inner (closed) side of the line through p, q, where
+/// `inner` is the orientation of (p, q, the triangle's third corner).
+bool reaches_edge_line(const Vec3& p, const Vec3& q, int inner, const Vec3& b0, const Vec3& b1, const Vec3& b2,
+                       int drop) {
+    return orient2d(p, q, b0, drop) * inner >= 0 || orient2d(p, q, b1, drop) * inner >= 0 ||
+           orient2d(p, q, b2, drop) * inner >= 0;
+}
+
+/// Coplanar triangles, A non-degenerate in the projection dropping `drop` (so that projection
+/// is one-to-one on their plane): true when the line of an edge of A, or of a non-degenerate
+/// B, has the other triangle strictly on its outer side. A triangle lies in the closed inner
+/// half-plane of each of its edges, so such a line separates them; when none exists they may
+/// still be disjoint, and the edge tests decide.
+bool separated_in_plane(const Vec3& a0, const Vec3& a1, const Vec3& a2, const Vec3& b0, const Vec3& b1,
+                        const Vec3& b2, int drop) {
+    const int oa = orient2d(a0, a1, a2, drop);
+    if (!reaches_edge_line(a0, a1, oa, b0, b1, b2, drop) || !reaches_edge_line(a1, a2, oa, b0, b1, b2, drop) ||
+        !reaches_edge_line(a2, a0, oa, b0, b1, b2, drop)) {
+        return true;
+    }
+    const int ob = orient2d(b0, b1, b2, drop);
+    if (ob == 0) return false;
+    return !reaches_edge_line(b0, b1, ob, a0, a1, a2, drop) || !reaches_edge_line(b1, b2, ob, a0, a1, a2, drop) ||
+           !reaches_edge_line(b2, b0, ob, a0, a1, a2, drop);
+}
+
+bool all_zero(const int s[3]) { return s[0] == 0 && s[1] == 0 && s[2] == 0; }
 
 }  // namespace
 
@@ -30,6 +60,11 @@ bool triangles_intersect(const Vec3& a0, const Vec3& a1, const Vec3& a2,
     const int side_b[3] = {orient3d(a0, a1, a2, b0), orient3d(a0, a1, a2, b1),
                            orient3d(a0, a1, a2, b2)};
     if (strictly_one_side(side_b)) return false;
+
+    if (all_zero(side_a) && all_zero(side_b)) {  // coplanar, or a degenerate triangle
+        const int drop = contact::projection_axis(a0, a1, a2);
+        if (drop >= 0 && separated_in_plane(a0, a1, a2, b0, b1, b2, drop)) return false;
+    }
 
     using contact::segment_intersects_triangle;
     return segment_intersects_triangle(a0, a1, side_a[0], side_a[1], b0, b1, b2) ||
