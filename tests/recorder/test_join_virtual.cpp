@@ -1,7 +1,8 @@
 // `join --virtual`: the large row datasets of the output are HDF5 virtual datasets over the
 // parts' rows. The output reads as the recording of the whole range (through the reader, the
 // command line and plain h5py), also where part boundaries fall inside the positions chunks,
-// from another current directory and after output and parts moved together; a missing, short
+// from another current directory, after output and parts moved together and with the parts
+// elsewhere under HDF5_VDS_PREFIX (the search HDF5 itself makes); a missing, short
 // or unreadable part is an error naming it and the dataset, never zeros; a virtual output is
 // refused as a part.
 
@@ -188,6 +189,25 @@ TEST_F(VirtualJoinFiles, AMissingPartIsAnErrorNamingItNeverZeros) {
     expect_one_line_error({"compare", (m_dir / "a" / "whole.h5").string(), run}, named);
     expect_one_line_error({"replay", run, "-o", "frames"}, named);
     EXPECT_THROW(Recording{run}, InputError);
+}
+
+TEST_F(VirtualJoinFiles, PartsElsewhereAreFoundThroughHdf5VdsPrefixAsHdf5FindsThem) {
+    // HDF5 searches HDF5_VDS_PREFIX before the file's own directory; the reader's check
+    // follows the same search, so it checks the files HDF5 then reads.
+    fs::create_directories(m_dir / "store");
+    fs::rename(m_dir / "a" / "run.h5.parts", m_dir / "store" / "run.h5.parts");
+    const fs::path run = m_dir / "a" / "run.h5";
+    EXPECT_THROW(Recording{run}, InputError);
+    setenv("HDF5_VDS_PREFIX", (m_dir / "store").c_str(), 1);
+    try {
+        const Recording joined(run), whole(m_dir / "a" / "whole.h5");
+        EXPECT_EQ(joined.virtual_sources().front().resolved.rfind((m_dir / "store").string(), 0), 0u);
+        testing::expect_same_recording(joined, whole, true);
+        expect_same_positions(joined, whole);
+    } catch (const InputError& error) {
+        ADD_FAILURE() << error.what();
+    }
+    unsetenv("HDF5_VDS_PREFIX");
 }
 
 TEST_F(VirtualJoinFiles, AShortOrUnreadablePartIsAnErrorNamingIt) {
