@@ -48,10 +48,17 @@ FrameRange block(FrameRange range);
 /// (a file or "-" for stdout): `target` serially, else a file of this rank's in the temporary
 /// directory, sent to rank 0 by MPI at the end (no shared file system needed).
 std::string text_output(const std::string& target);
-/// Where this rank writes a recording the run delivers at `target`: `target` serially, else
-/// `target`.rank<R>.h5 beside it (on a file system rank 0 can read), joined by rank 0 into
-/// `target` (recorder/join.hpp) and removed once every rank finished.
-std::string recording_output(const std::string& target);
+/// How rank 0 joins the ranks' part recordings (record --join).
+enum class RecordingJoin {
+    Virtual,  ///< `target` maps the parts' rows (virtual datasets); the parts are kept, they are the data
+    Copy,     ///< `target` holds a copy of every row (self-contained); the parts are removed
+};
+
+/// Where this rank writes a recording the run delivers at `target`: `target` serially, else a
+/// part file on a file system rank 0 can read, joined by rank 0 into `target`
+/// (recorder/join.hpp) once every rank finished: `target`.parts/rank<R>.h5 for a virtual join
+/// (kept: `target` reads them), `target`.rank<R>.h5 for a copying one (removed after the join).
+std::string recording_output(const std::string& target, RecordingJoin join = RecordingJoin::Virtual);
 /// The command reads and processes scene frame `frame` now (named in error lines); returns it.
 std::uint32_t at_frame(std::uint32_t frame);
 /// "rank 1 of 3, frames 30..59, at frame 42: " under MPI, "" serially: the start of this

@@ -32,6 +32,7 @@ struct RecordOptions {
     std::string queue = "256M";     ///< writer queue memory cap
     int compression = 1;            ///< gzip level of positions, pairs, triangles (0 = none)
     int writer_nice = 10;           ///< nice increment of the writer thread (0 = none)
+    std::string join = "virtual";   ///< under mpirun: how the ranks' parts are joined (ranks.hpp)
     bool quiet = false;
     EngineOptions engine;           ///< --method, --self, --threads, --gpu-*, --aabb-*
 };
@@ -134,7 +135,8 @@ int run_record(const RecordOptions& options) {
     Frame frame = scene.source->frame(ranks::at_frame(range.begin));
 
     recorder::RecorderConfig recorder_config;
-    const std::string output = ranks::recording_output(options.output);
+    const std::string output = ranks::recording_output(
+        options.output, options.join == "copy" ? ranks::RecordingJoin::Copy : ranks::RecordingJoin::Virtual);
     recorder_config.path = output;
     recorder_config.budget_bytes = budget;
     recorder_config.queue_bytes = parse_size(options.queue, "--queue-memory");
@@ -198,6 +200,11 @@ Command add_record_command(CLI::App& app) {
     add_engine_options(*record, options->engine);
     record->add_option("--writer-nice", options->writer_nice, "Nice increment of the writer thread (0 = same priority)")
         ->check(CLI::Range(0, 19))
+        ->capture_default_str();
+    record->add_option("--join", options->join,
+                       "Under mpirun: virtual (FILE maps the ranks' parts, kept in FILE.parts/, which must stay with it) or "
+                       "copy (one self-contained FILE; the parts are removed). Serial runs ignore it")
+        ->check(CLI::IsMember({"virtual", "copy"}))
         ->capture_default_str();
     record->add_flag("-q,--quiet", options->quiet, "Only the final line on stderr");
     return {record, [options] { return run_record(*options); }};

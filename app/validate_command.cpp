@@ -7,6 +7,7 @@
 
 #include <iostream>
 #include <memory>
+#include <set>
 
 namespace collidescope::app {
 namespace {
@@ -30,6 +31,18 @@ int run_validate(const ValidateOptions& options) {
                   << " frames complete (--allow-incomplete accepts it)\n";
         ok = false;
     }
+    if (!options.quiet && !recording.virtual_sources().empty()) {
+        // Opening checked every part: present, HDF5, with the rows each mapping reads.
+        std::set<std::string> datasets, parts;
+        for (const recorder::VirtualSource& source : recording.virtual_sources()) {
+            datasets.insert(source.dataset);
+            parts.insert(source.file);
+        }
+        std::string names;
+        for (const std::string& part : parts) names += (names.empty() ? "" : ", ") + part;
+        std::cerr << options.file << ": virtual join: " << datasets.size() << " datasets map rows of " << parts.size()
+                  << " part files (" << names << "), every one present with the rows it needs\n";
+    }
     if (!options.quiet) {
         std::cerr << options.file << ": " << (ok ? "valid" : "INVALID") << ", schema " << recording.version_major() << "."
                   << recording.version_minor() << ", " << report.frames_complete << " frames complete"
@@ -52,7 +65,8 @@ Command add_validate_command(CLI::App& app) {
         "offsets starting at 0, non-decreasing and in range, pairs canonical, sorted and naming existing triangles,\n"
         "counts (colliding_pairs, triangles) matching the arrays, positions of the topology in force, known methods,\n"
         "finite non-negative times, and that the recording is complete: the writer finished and no signal stopped it\n"
-        "early (a partial recording is invalid unless --allow-incomplete).\n"
+        "early (a partial recording is invalid unless --allow-incomplete). A virtual join (join --virtual, mpirun record):\n"
+        "every part file it maps is present, readable and holds the rows its mappings read (listed).\n"
         "Exit codes: 0 valid, 1 invalid (problems on stderr), 2 error (not a recording, unreadable, newer schema).");
     return {validate, [options] { return run_validate(*options); }};
 }

@@ -38,7 +38,7 @@ struct State {
     bool have_block = false;
     std::int64_t frame = -1;  ///< the frame being read or processed, -1 before the first
     std::vector<TextOutput> texts;
-    std::vector<std::string> recordings;  ///< targets; parts are recording_part(target, r)
+    std::vector<std::pair<std::string, RecordingJoin>> recordings;  ///< targets; parts are recording_part(target, join, r)
 };
 
 State g_state;
@@ -50,7 +50,16 @@ bool launched_by_mpi() {
     return false;
 }
 
-std::string recording_part(const std::string& target, int rank) { return target + ".rank" + std::to_string(rank) + ".h5"; }
+// A virtual join's parts are its data, kept in a folder of their own beside it; a copying
+// join's are removed once joined.
+std::string parts_folder(const std::string& target) { return target + ".parts"; }
+std::string recording_part(const std::string& target, RecordingJoin join, int rank) {
+    if (join == RecordingJoin::Virtual) return parts_folder(target) + "/rank" + std::to_string(rank) + ".h5";
+    return target + ".rank" + std::to_string(rank) + ".h5";
+}
+std::string parts_pattern(const std::string& target, RecordingJoin join) {
+    return join == RecordingJoin::Virtual ? parts_folder(target) + "/rank*.h5" : target + ".rank*.h5";
+}
 
 constexpr int k_chunk_bytes = 16 << 20;
 
@@ -135,28 +144,36 @@ int combine(const std::vector<int>& codes) {
 
 void print_line(const std::string& line) { std::cerr << "collidescope: " << line << std::endl; }
 
-// Rank 0: joins the parts into the target and removes them, or says where they are.
-int assemble_recording(const std::string& target, const std::vector<int>& codes, int code) {
+// Rank 0: joins the parts into the target (a copying join then removes them), or says where
+// they are.
+int assemble_recording(const std::string& target, RecordingJoin join, const std::vector<int>& codes, int code) {
     std::vector<std::filesystem::path> parts;
     std::string failed;
     for (int r = 0; r < g_state.size; ++r) {
-        parts.emplace_back(recording_part(target, r));
+        parts.emplace_back(recording_part(target, join, r));
         if (codes[static_cast<std::size_t>(r)] != 0) failed += (failed.empty() ? "" : ", ") + std::to_string(r);
     }
-    const std::string pattern = target + ".rank*.h5";
+    const std::string pattern = parts_pattern(target, join);
     if (!failed.empty()) {
         print_line("rank(s) " + failed + " did not finish; every rank's finished frames are in " + pattern +
                    " (collidescope join --allow-incomplete " + pattern + " -o " + target + ")");
         return code;
     }
+    recorder::JoinOptions options;
+    if (join == RecordingJoin::Virtual) options.layout = recorder::JoinLayout::Virtual;
     try {
-        const recorder::JoinSummary summary = recorder::join_recordings(parts, target);
-        print_line("joined the " + std::to_string(summary.parts) + " ranks' parts, " + std::to_string(summary.frames) +
-                   " frames -> " + target);
+        const recorder::JoinSummary summary = recorder::join_recordings(parts, target, options);
+        std::string line = "joined the " + std::to_string(summary.parts) + " ranks' parts, " + std::to_string(summary.frames) +
+                           " frames -> " + target;
+        if (join == RecordingJoin::Virtual) {
+            line += " (virtual: its data stays in " + parts_folder(target) + "/, which must be kept and moved with it)";
+        }
+        print_line(line);
     } catch (const std::exception& error) {
         print_line("error: " + std::string(error.what()) + "; the parts are kept: " + pattern);
         return 2;
     }
+    if (join == RecordingJoin::Virtual) return code;
     std::error_code error;
     for (const std::filesystem::path& part : parts) std::filesystem::remove(part, error);
     return code;
@@ -210,7 +227,7 @@ int Session::finish(int code) {
         }
     }
     if (g_state.rank == 0) {
-        for (const std::string& target : g_state.recordings) combined = assemble_recording(target, codes, combined);
+        for (const auto& [target, join] : g_state.recordings) combined = assemble_recording(target, join, codes, combined);
     }
     MPI_Bcast(&combined, 1, MPI_INT, 0, MPI_COMM_WORLD);
     // The run's code comes from rank 0 alone: mpirun exits with the first non-zero code a rank
@@ -237,10 +254,14 @@ std::string text_output(const std::string& target) {
     return local;
 }
 
-std::string recording_output(const std::string& target) {
+std::string recording_output(const std::string& target, RecordingJoin join) {
     if (!g_state.active) return target;
-    g_state.recordings.push_back(target);
-    return recording_part(target, g_state.rank);
+    g_state.recordings.emplace_back(target, join);
+    if (join == RecordingJoin::Virtual) {
+        std::error_code error;  // every rank tries; the recorder names the file if it cannot write there
+        std::filesystem::create_directories(parts_folder(target), error);
+    }
+    return recording_part(target, join, g_state.rank);
 }
 
 std::uint32_t at_frame(std::uint32_t frame) {

@@ -10,7 +10,7 @@ int Session::finish(int code) { return code; }
 bool parallel() { return false; }
 FrameRange block(FrameRange range) { return range; }
 std::string text_output(const std::string& target) { return target; }
-std::string recording_output(const std::string& target) { return target; }
+std::string recording_output(const std::string& target, RecordingJoin) { return target; }
 std::uint32_t at_frame(std::uint32_t frame) { return frame; }
 std::string error_prefix() { return ""; }
 

@@ -5,6 +5,8 @@ Frames are named by their scene frame number, as in `check --pairs` (for a Sessi
 still being written, or killed, has every dataset up to its last flushed frame (the rule of
 docs/recording.md, "Frames complete"), and `refresh()` picks up frames written since.
 """
+import os
+
 import h5py
 import numpy as np
 
@@ -259,10 +261,60 @@ class Recording:
 
 def _open_file(path):
     try:
-        return h5py.File(path, "r", swmr=True)
+        f = h5py.File(path, "r", swmr=True)
     except OSError:
-        pass
+        f = None
+    if f is None:
+        try:
+            f = h5py.File(path, "r")
+        except OSError as error:
+            raise RecordingError("%s: cannot open as HDF5 (%s)" % (path, error)) from None
     try:
-        return h5py.File(path, "r")
-    except OSError as error:
-        raise RecordingError("%s: cannot open as HDF5 (%s)" % (path, error)) from None
+        _check_virtual_sources(path, f)
+    except RecordingError:
+        f.close()
+        raise
+    return f
+
+
+def _resolve_source(path, name):
+    """Where HDF5 1.10 opens source file NAME of a virtual dataset in the file at PATH: an
+    absolute name as is, then each directory of HDF5_VDS_PREFIX, then the file's own directory
+    (HDF5 then tries NAME relative to the current directory, which could be another run's part:
+    not followed here). None when not found."""
+    name = name.replace("%%", "%")
+    tail = name
+    if os.path.isabs(name):
+        if os.path.isfile(name):
+            return name
+        tail = os.path.basename(name)
+    for prefix in os.environ.get("HDF5_VDS_PREFIX", "").split(":"):
+        if prefix and os.path.isfile(os.path.join(prefix, tail)):
+            return os.path.join(prefix, tail)
+    beside = os.path.join(os.path.dirname(os.path.abspath(path)), tail)
+    return beside if os.path.isfile(beside) else None
+
+
+def _check_virtual_sources(path, f):
+    """A virtual join (`join --virtual`, docs/mpi.md) reads its rows from part files; h5py reads
+    a missing part's rows as zeros without an error. Raises RecordingError, one line naming the
+    part and the dataset, unless every part is there with the rows its mapping reads."""
+    virtual = []
+    f.visititems(lambda name, obj: virtual.append(obj) if isinstance(obj, h5py.Dataset) and obj.is_virtual else None)
+    for dataset in virtual:
+        for mapping in dataset.virtual_sources():
+            what = "%s: /%s maps rows of %s" % (path, dataset.name.lstrip("/"), mapping.file_name)
+            found = _resolve_source(path, mapping.file_name)
+            if found is None:
+                raise RecordingError(what + ", which is missing (a virtual join reads its parts: keep them beside it)")
+            try:
+                with h5py.File(found, "r") as part:
+                    rows = part[mapping.dset_name].shape[0] if mapping.dset_name in part else None
+            except OSError:
+                raise RecordingError(what + ", which is unreadable (%s)" % found) from None
+            if rows is None:
+                raise RecordingError(what + ", which has no dataset " + mapping.dset_name)
+            needed = mapping.src_space.get_select_bounds()[1][0] + 1
+            if rows < needed:
+                raise RecordingError(what + ", which holds %d rows of %s, not the %d the mapping reads"
+                                     % (rows, mapping.dset_name, needed))

@@ -112,3 +112,29 @@ def test_not_a_recording(tmp_path):
     text.write_text("not hdf5")
     with pytest.raises(collidescope.RecordingError, match=r"notes.h5: cannot open as HDF5"):
         collidescope.open(text)
+
+
+def test_a_virtual_join_reads_as_the_whole_run_and_a_missing_part_is_an_error(tmp_path, cli):
+    """`join --virtual` leaves the positions in the parts: collidescope.open reads it as the
+    whole run, and refuses it (naming the part) when a part is gone, where plain h5py reads
+    zeros."""
+    import h5py
+    record = ("record", "--scene", "D:small", "--method", "aabb", "--threads", "1", "-q")
+    for args in (("-o", "whole.h5"), ("--frames", ":5", "-o", "parts/p0.h5"), ("--frames", "5:", "-o", "parts/p1.h5")):
+        os.makedirs(tmp_path / "parts", exist_ok=True)
+        code, out, err = run_cli(cli, *record, *args, cwd=tmp_path)
+        assert code == 0, err
+    code, out, err = run_cli(cli, "join", "--virtual", "parts/p0.h5", "parts/p1.h5", "-o", "run.h5", cwd=tmp_path)
+    assert code == 0, err
+    with collidescope.open(tmp_path / "whole.h5") as whole, collidescope.open(tmp_path / "run.h5") as joined:
+        assert list(joined.frames) == list(whole.frames)
+        for frame in whole.frames:
+            assert np.array_equal(joined.pairs(frame), whole.pairs(frame))
+            for k in range(len(whole.objects)):
+                assert np.array_equal(joined.positions(frame, k), whole.positions(frame, k))
+    os.remove(tmp_path / "parts" / "p1.h5")
+    with h5py.File(tmp_path / "run.h5", "r") as f:
+        assert f["objects/0/positions"].is_virtual
+        assert not f["objects/0/positions"][-1].any()  # HDF5's fill value: why the check exists
+    with pytest.raises(collidescope.RecordingError, match=r"run.h5: /\S+ maps rows of parts/p1.h5, which is missing"):
+        collidescope.open(tmp_path / "run.h5")

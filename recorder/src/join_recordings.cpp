@@ -4,6 +4,8 @@
 
 #include "h5.hpp"
 #include "join_copy.hpp"
+#include "join_virtual.hpp"
+#include "virtual_sources.hpp"
 
 #include "collidescope/error.hpp"
 #include "collidescope/recorder/reader.hpp"
@@ -273,6 +275,10 @@ Part open_part(const std::filesystem::path& path, bool allow_incomplete) {
         }
     }
     part.file = open_part_file(part.where);
+    // A virtual join's mappings name files relative to it, and its rows cannot be copied raw.
+    if (!virtual_sources::list(part.where, part.file.get()).empty()) {
+        part.where.fail("is a virtual join (its datasets map rows of other files), not a part: join the parts it maps instead");
+    }
     part.frame_begin = h5::read_int_attr(part.where, part.file.get(), "frame_begin").value_or(0);
     part.frame_end = h5::read_int_attr(part.where, part.file.get(), "frame_end").value_or(0);
     return part;
@@ -298,13 +304,58 @@ void check_ranges(const std::vector<Part>& parts) {
     }
 }
 
-void create_tree(const Part& first, const std::vector<Node>& tree, const h5::Where& where, hid_t out) {
+// The datasets a virtual join maps instead of copying: extensible ones (fixed-size ones are
+// the first part's), not offsets (their values are rebased), with at least
+// options.virtual_min_rows rows per part on average.
+std::set<std::string> plan_virtual(const std::vector<Part>& parts, const std::vector<Node>& tree, const JoinOptions& options) {
+    std::set<std::string> mapped;
+    if (options.layout != JoinLayout::Virtual) return mapped;
+    for (const Node& node : tree) {
+        if (node.group || is_offsets(node.path)) continue;
+        hsize_t total = 0;
+        for (const Part& part : parts) {
+            const Rows rows = part.rows.at(node.path);
+            if (rows.end > rows.begin) total += rows.end - rows.begin;
+        }
+        if (total == 0 || total < options.virtual_min_rows * parts.size()) continue;
+        const Part& first = parts.front();
+        const h5::Id dataset = h5::open_dataset(first.where, first.file.get(), node.path);
+        const h5::Id space = first.where.own(H5Dget_space(dataset.get()), H5Sclose, "cannot read the shape of " + node.path);
+        hsize_t dims[2] = {}, max_dims[2] = {};
+        const int rank = H5Sget_simple_extent_ndims(space.get());
+        if (rank < 1 || rank > 2) continue;
+        H5Sget_simple_extent_dims(space.get(), dims, max_dims);
+        if (max_dims[0] == H5S_UNLIMITED) mapped.insert(node.path);
+    }
+    return mapped;
+}
+
+h5::Id create_mapped(const std::vector<Part>& parts, const std::string& path, const h5::Where& where, hid_t out) {
+    const Part& first = parts.front();
+    const h5::Id source = h5::open_dataset(first.where, first.file.get(), path);
+    const h5::Id type = first.where.own(H5Dget_type(source.get()), H5Tclose, "cannot read the type of " + path);
+    const std::vector<hsize_t> dims = h5::shape(first.where, source.get(), path);
+    std::vector<join::VirtualPiece> pieces;
+    for (const Part& part : parts) {
+        const Rows rows = part.rows.at(path);
+        if (rows.end <= rows.begin) continue;
+        pieces.push_back({join::source_name(part.path, where.file()), rows.begin, rows.end, length_of(part, path)});
+    }
+    return join::create_virtual(where, out, path, type.get(), static_cast<int>(dims.size()), dims.size() == 2 ? dims[1] : 1,
+                                pieces);
+}
+
+void create_tree(const std::vector<Part>& parts, const std::vector<Node>& tree, const std::set<std::string>& mapped,
+                 const h5::Where& where, hid_t out) {
+    const Part& first = parts.front();
     for (const Node& node : tree) {
         const h5::Id source = first.where.own(H5Oopen(first.file.get(), node.path.c_str(), H5P_DEFAULT), H5Oclose,
                                               "cannot open " + node.path);
         h5::Id target;
         if (node.group) {
             target = h5::create_group(where, out, node.path);
+        } else if (mapped.count(node.path) != 0) {
+            target = create_mapped(parts, node.path, where, out);
         } else {
             const h5::Id type = first.where.own(H5Dget_type(source.get()), H5Tclose, "cannot read the type of " + node.path);
             const h5::Id dcpl = first.where.own(H5Dget_create_plist(source.get()), H5Pclose, "cannot read the layout of " + node.path);
@@ -365,7 +416,8 @@ void write_root_attributes(const std::vector<Part>& parts, const h5::Where& wher
     }
 }
 
-JoinSummary write_joined(std::vector<Part>& parts, const std::vector<Node>& tree, const h5::Where& where, bool complete) {
+JoinSummary write_joined(std::vector<Part>& parts, const std::vector<Node>& tree, const h5::Where& where, bool complete,
+                         const JoinOptions& options) {
     const h5::Id fapl = where.own(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create a property list");
     where.check(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST), "cannot select the latest file format");
     const h5::Id fcpl = where.own(H5Pcreate(H5P_FILE_CREATE), H5Pclose, "cannot create a property list");
@@ -373,13 +425,22 @@ JoinSummary write_joined(std::vector<Part>& parts, const std::vector<Node>& tree
     h5::Id out = where.own(H5Fcreate(where.file().c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get()), H5Fclose,
                            "cannot create the joined recording (is the directory writable?)");
     write_root_attributes(parts, where, out.get());
-    create_tree(parts.front(), tree, where, out.get());
+    const std::set<std::string> mapped = plan_virtual(parts, tree, options);
+    create_tree(parts, tree, mapped, where, out.get());
     JoinSummary summary;
     summary.parts = parts.size();
     for (const Part& part : parts) summary.frames += part.frames;
     summary.complete = complete;
     for (const Node& node : tree) {
         if (node.group || parts.front().rows.count(node.path) == 0) continue;
+        if (mapped.count(node.path) != 0) {
+            ++summary.virtual_datasets;
+            for (const Part& part : parts) {
+                const Rows rows = part.rows.at(node.path);
+                if (rows.end > rows.begin) summary.virtual_rows += rows.end - rows.begin;
+            }
+            continue;
+        }
         const h5::Id target = h5::open_dataset(where, out.get(), node.path);
         {
             const h5::Id space = where.own(H5Dget_space(target.get()), H5Sclose, "cannot read the shape of " + node.path);
@@ -449,7 +510,7 @@ JoinSummary join_recordings(const std::vector<std::filesystem::path>& paths, con
 
     const std::filesystem::path partial = output.string() + ".partial";
     try {
-        JoinSummary summary = write_joined(parts, tree, h5::Where(partial.string()), complete);
+        JoinSummary summary = write_joined(parts, tree, h5::Where(partial.string()), complete, options);
         std::filesystem::rename(partial, output);
         return summary;
     } catch (...) {

@@ -3,6 +3,7 @@
 #include "collidescope/recorder/reader.hpp"
 
 #include "recording_impl.hpp"
+#include "virtual_sources.hpp"
 
 #include "collidescope/recorder/schema.hpp"
 
@@ -40,6 +41,9 @@ void Recording::Impl::open_file() {
         where.fail("cannot open the HDF5 file (corrupt or truncated?)" + (detail.empty() ? "" : ": " + detail));
     }
     file = h5::Id(id, H5Fclose);
+    // A virtual join's rows live in its parts; HDF5 reads a missing part as zeros, silently.
+    virtual_sources = recorder::virtual_sources::list(where, file.get());
+    recorder::virtual_sources::check(where, virtual_sources);
 }
 
 void Recording::Impl::check_schema() {
@@ -153,6 +157,7 @@ std::int64_t Recording::version_minor() const { return m_impl->version_minor; }
 bool Recording::finished() const { return m_impl->finished; }
 const std::string& Recording::interrupted() const { return m_impl->interrupted; }
 std::uint64_t Recording::frames_requested() const { return m_impl->frames_requested; }
+const std::vector<VirtualSource>& Recording::virtual_sources() const { return m_impl->virtual_sources; }
 
 std::string Recording::partial_reason() const {
     const std::string frames = std::to_string(m_impl->frames);

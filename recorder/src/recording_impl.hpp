@@ -27,6 +27,7 @@ struct Recording::Impl {
     char up_axis = 0;                   ///< attribute `up_axis` (1.4; 0 when absent)
     std::uint64_t frames = 0;
     std::vector<ObjectInfo> objects;
+    std::vector<VirtualSource> virtual_sources;  ///< a virtual join's mappings, checked at open
 
     explicit Impl(const std::string& path) : where(path) {}
 

@@ -1,7 +1,8 @@
 // Frame-parallel runs under mpirun (app/ranks.hpp, docs/mpi.md): the blocks of frames each rank
 // takes; `check` on 2 and 3 ranks (oversubscribed) gives the serial run's pairs TSV byte for
 // byte, its stats in frame order and its exit code, for every method; `record` on 2 ranks gives
-// a recording that `compare` finds equal to the serial one; a bad frame in one block and a rank
+// a recording that `compare` finds equal to the serial one, joined virtually over the parts it
+// keeps in FILE.parts/ by default and copied into one file with `--join copy`; a bad frame in one block and a rank
 // killed with SIGKILL end the run with an error naming the rank, and every finished frame stays
 // readable (`join --allow-incomplete`, `validate --allow-incomplete`).
 //
@@ -183,22 +184,51 @@ TEST(MpiCheck, TwoAndThreeRanksGiveTheSerialPairsStatsAndExitCode) {
     }
 }
 
-TEST(MpiRecord, TwoRanksJoinIntoTheSerialRecording) {
+// `file` reads as `serial`: compare exit 0, valid, the same datasets and rows, the same
+// positions element for element (plain h5py included).
+void expect_serial_recording(const fs::path& dir, const std::string& file) {
+    const CliResult compare = testing::run_cli({"compare", "serial.h5", file}, dir);
+    EXPECT_EQ(compare.exit_code, 0) << compare.out;
+    EXPECT_EQ(testing::run_cli({"validate", file}, dir).exit_code, 0);
+    const recorder::Recording serial(dir / "serial.h5"), joined(dir / file);
+    EXPECT_EQ(joined.dataset_paths(), serial.dataset_paths());
+    for (const std::string& path : serial.dataset_paths()) EXPECT_EQ(joined.rows_of(path), serial.rows_of(path)) << path;
+    for (std::uint32_t k = 0; k < serial.objects().size(); ++k) {
+        for (std::uint64_t row = 0; row < serial.frames_complete(); ++row) {
+            ASSERT_EQ(joined.positions(k, row), serial.positions(k, row)) << file << " object " << k << " row " << row;
+        }
+    }
+    const std::string h5py = "cd " + quoted(dir.string()) +
+                             " && /usr/bin/python3 -c 'import sys, h5py, numpy as np; a, b = h5py.File(\"serial.h5\", \"r\"), "
+                             "h5py.File(sys.argv[1], \"r\"); sys.exit(0 if all(np.array_equal(a[n][()], b[n][()]) for n in "
+                             "(\"objects/0/positions\", \"objects/1/positions\", \"collisions/pairs\")) else 1)' " +
+                             quoted(file);
+    EXPECT_EQ(std::system(h5py.c_str()), 0) << "h5py: positions or pairs of " << file << " differ from serial.h5";
+}
+
+TEST(MpiRecord, TwoRanksJoinVirtuallyByDefaultAndCopyOnRequest) {
     REQUIRE_MPI();
     TempDir dir;
     const std::vector<std::string> record = {"record", "--scene", "D:small", "--method", "aabb", "--threads", "1", "-q"};
     ASSERT_EQ(testing::run_cli(with(record, {"-o", "serial.h5"}), dir.path()).exit_code, 0);
-    const CliResult parallel = run_mpi(2, with(record, {"-o", "mpi.h5"}), dir.path());
-    ASSERT_EQ(parallel.exit_code, 0) << parallel.err;
-    EXPECT_NE(parallel.err.find("joined the 2 ranks' parts"), std::string::npos) << parallel.err;
-    EXPECT_FALSE(fs::exists(dir / "mpi.h5.rank0.h5"));
-    EXPECT_FALSE(fs::exists(dir / "mpi.h5.rank1.h5"));
-    const CliResult compare = testing::run_cli({"compare", "serial.h5", "mpi.h5"}, dir.path());
-    EXPECT_EQ(compare.exit_code, 0) << compare.out;
-    EXPECT_EQ(testing::run_cli({"validate", "mpi.h5"}, dir.path()).exit_code, 0);
-    const recorder::Recording serial(dir / "serial.h5"), joined(dir / "mpi.h5");
-    EXPECT_EQ(joined.dataset_paths(), serial.dataset_paths());
-    for (const std::string& path : serial.dataset_paths()) EXPECT_EQ(joined.rows_of(path), serial.rows_of(path)) << path;
+
+    const CliResult virtual_join = run_mpi(2, with(record, {"-o", "mpi.h5"}), dir.path());
+    ASSERT_EQ(virtual_join.exit_code, 0) << virtual_join.err;
+    EXPECT_NE(virtual_join.err.find("joined the 2 ranks' parts"), std::string::npos) << virtual_join.err;
+    EXPECT_NE(virtual_join.err.find("mpi.h5.parts/"), std::string::npos) << virtual_join.err;
+    // The parts are the data: kept.
+    EXPECT_TRUE(fs::exists(dir / "mpi.h5.parts" / "rank0.h5"));
+    EXPECT_TRUE(fs::exists(dir / "mpi.h5.parts" / "rank1.h5"));
+    EXPECT_FALSE(recorder::Recording(dir / "mpi.h5").virtual_sources().empty());
+    expect_serial_recording(dir.path(), "mpi.h5");
+
+    const CliResult copy_join = run_mpi(2, with(record, {"--join", "copy", "-o", "copy.h5"}), dir.path());
+    ASSERT_EQ(copy_join.exit_code, 0) << copy_join.err;
+    EXPECT_FALSE(fs::exists(dir / "copy.h5.rank0.h5"));
+    EXPECT_FALSE(fs::exists(dir / "copy.h5.rank1.h5"));
+    EXPECT_FALSE(fs::exists(dir / "copy.h5.parts"));
+    EXPECT_TRUE(recorder::Recording(dir / "copy.h5").virtual_sources().empty());
+    expect_serial_recording(dir.path(), "copy.h5");
 }
 
 TEST(MpiFaults, BadFrameInOneBlockNamesRankAndFrameAndKeepsFinishedFrames) {
@@ -227,8 +257,8 @@ TEST(MpiFaults, BadFrameInOneBlockNamesRankAndFrameAndKeepsFinishedFrames) {
     EXPECT_NE(recorded.err.find(line), std::string::npos) << recorded.err;
     EXPECT_NE(recorded.err.find("join --allow-incomplete"), std::string::npos) << recorded.err;
     EXPECT_FALSE(fs::exists(dir / "run.h5"));
-    const CliResult joined = testing::run_cli({"join", "--allow-incomplete", "run.h5.rank0.h5", "run.h5.rank1.h5", "-o", "kept.h5"},
-                                              dir.path());
+    const CliResult joined = testing::run_cli(
+        {"join", "--allow-incomplete", "run.h5.parts/rank0.h5", "run.h5.parts/rank1.h5", "-o", "kept.h5"}, dir.path());
     ASSERT_EQ(joined.exit_code, 0) << joined.err;
     EXPECT_EQ(testing::run_cli({"validate", "--allow-incomplete", "kept.h5"}, dir.path()).exit_code, 0);
     const recorder::Recording kept(dir / "kept.h5");
@@ -287,7 +317,7 @@ TEST(MpiFaults, SigkillOfARankEndsTheRunNamingItAndKeepsEveryFinishedFrame) {
     bool killed = false;
     while (!killed && std::chrono::steady_clock::now() < deadline) {
         if (waitpid(mpirun, nullptr, WNOHANG) == mpirun) break;
-        if (frames_complete_now(dir / "run.h5.rank1.h5") >= 3) {
+        if (frames_complete_now(dir / "run.h5.parts" / "rank1.h5") >= 3) {
             const pid_t rank1 = find_rank(tag, 1);
             ASSERT_GT(rank1, 0);
             killed = kill(rank1, SIGKILL) == 0;
@@ -303,11 +333,11 @@ TEST(MpiFaults, SigkillOfARankEndsTheRunNamingItAndKeepsEveryFinishedFrame) {
     EXPECT_FALSE(fs::exists(dir / "run.h5"));
     // Whatever each rank flushed is there: rank 1's first 3 frames (30..32) at least.
     std::vector<std::string> parts;
-    for (const char* part : {"run.h5.rank0.h5", "run.h5.rank1.h5"}) {
+    for (const char* part : {"run.h5.parts/rank0.h5", "run.h5.parts/rank1.h5"}) {
         if (frames_complete_now(dir / part) > 0) parts.push_back(part);
     }
     ASSERT_FALSE(parts.empty());
-    EXPECT_GE(frames_complete_now(dir / "run.h5.rank1.h5"), 3u);
+    EXPECT_GE(frames_complete_now(dir / "run.h5.parts" / "rank1.h5"), 3u);
     const CliResult joined = testing::run_cli(with({"join", "--allow-incomplete", "-o", "kept.h5"}, parts), dir.path());
     ASSERT_EQ(joined.exit_code, 0) << joined.err;
     EXPECT_EQ(testing::run_cli({"validate", "--allow-incomplete", "kept.h5"}, dir.path()).exit_code, 0);

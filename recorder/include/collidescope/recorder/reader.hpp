@@ -42,10 +42,24 @@ struct Series {
     std::vector<T> values;  ///< one per complete frame
 };
 
+/// One mapping of a virtual dataset (a virtual join, `join --virtual`, docs/mpi.md): rows
+/// [first, first + rows) of `dataset` are rows [source_first, source_first + rows) of
+/// `source_dataset` in the part file `file`.
+struct VirtualSource {
+    std::string dataset;
+    std::string file;            ///< as the mapping stores it (relative to the recording's directory)
+    std::string resolved;        ///< where it was found (HDF5's search: HDF5_VDS_PREFIX, then beside the recording)
+    std::string source_dataset;
+    std::uint64_t first = 0;
+    std::uint64_t rows = 0;
+    std::uint64_t source_first = 0;
+};
+
 class Recording {
 public:
     /// Opens `path` read-only (SWMR read when the file allows it, so a recording being
-    /// written or killed opens too). Throws InputError naming the file.
+    /// written or killed opens too). Throws InputError naming the file; for a virtual join,
+    /// also when a part file it maps is missing, unreadable or short (naming part and dataset).
     explicit Recording(const std::filesystem::path& path);
     ~Recording();
     Recording(Recording&&) noexcept;
@@ -116,6 +130,10 @@ public:
     std::uint64_t storage_of(const std::string& dataset) const;
     /// Reads a whole 1-D integer dataset (offsets, indices) converted to uint64.
     std::vector<std::uint64_t> read_u64(const std::string& dataset) const;
+    /// The mappings of its virtual datasets (empty but for a virtual join). Opening checked
+    /// that every part file they name is there and holds the rows they need: HDF5 itself would
+    /// read a missing one as zeros.
+    const std::vector<VirtualSource>& virtual_sources() const;
 
     struct Impl;
 
