@@ -63,7 +63,7 @@ std::string frame_file(const std::string& stem, std::uint32_t frame) {
 }
 
 void write_object_frame(const std::filesystem::path& file, const ObjectFrame& object) {
-    const MeshData mesh{object.vertices, object.topology->triangles};
+    const MeshData mesh{object.vertices.to_vector(), object.topology->triangles};
     write_ply(file, mesh, !all_float32(mesh.vertices));
 }
 

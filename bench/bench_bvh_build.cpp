@@ -61,7 +61,7 @@ const Mesh& mesh_by_index(std::int64_t index) {
     static const Mesh soup = soup_mesh(1'000'000);
     static const Mesh dragon = [] {
         const Frame frame = make_builtin_scene("E4").source->frame(0);
-        return Mesh{frame.objects[0].topology->triangles, frame.objects[0].vertices};
+        return Mesh{frame.objects[0].topology->triangles, frame.objects[0].vertices.to_vector()};
     }();
     return index == 0 ? sheet : index == 1 ? soup : dragon;
 }

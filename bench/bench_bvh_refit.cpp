@@ -55,7 +55,7 @@ Mesh dragon_mesh() {
     const Frame frame = make_builtin_scene("E4").source->frame(0);
     Mesh mesh;
     mesh.triangles = frame.objects[0].topology->triangles;
-    mesh.rest = frame.objects[0].vertices;
+    mesh.rest = frame.objects[0].vertices.to_vector();
     return mesh;
 }
 

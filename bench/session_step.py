@@ -14,6 +14,11 @@ over the sum of the C++ medians, with the per-round ratios' spread. On a shared 
 ratio carries the noise of a 10-50 ms frame, so the script also measures what Python adds per
 call on a tiny scene (microseconds, where the engine's time and noise are small) and states
 it as a share of the large frame's C++ step.
+
+The float64 C-contiguous arrays reach the engine with no copy (counts.positions_copied_bytes
+is 0, printed); the last line times the same C++ loop on float32 copies of the frames, which
+the session converts (24 bytes per vertex), against the float64 ones in one run: what a copy
+of the positions per step costs, which the zero-copy path does not pay.
 """
 import argparse
 import statistics
@@ -38,6 +43,31 @@ def python_times(scene_triangles, frames, options):
 def cpp_times(scene_triangles, frames, options):
     session = collidescope.Session(scene_triangles, **options)
     return collidescope._core._cpp_step_times(session, frames)
+
+
+def copied_bytes(scene_triangles, frames, options):
+    """counts.positions_copied_bytes of one Python step on FRAMES[0]."""
+    session = collidescope.Session(scene_triangles, **options)
+    session.step(frames[0])
+    return session.stats["counts"]["positions_copied_bytes"]
+
+
+def copy_cost(spec, frame_count, rounds, options):
+    """Per-frame medians over ROUNDS of the C++ step on float64 frames (viewed in place) and
+    on float32 copies of them (converted), alternating which runs first; and the bytes each
+    copies per frame."""
+    scene = collidescope.scene(spec)
+    frame_count = min(frame_count, len(scene))
+    triangles = scene.triangles()
+    doubles = [[np.ascontiguousarray(p, dtype=np.float64) for p in scene.positions(f)] for f in range(frame_count)]
+    frames = {"float64": doubles, "float32": [[p.astype(np.float32) for p in f] for f in doubles]}
+    runs = {"float64": [], "float32": []}
+    for r in range(rounds):
+        for dtype in (("float64", "float32") if r % 2 == 0 else ("float32", "float64")):
+            runs[dtype].append(cpp_times(triangles, frames[dtype], options))
+    medians = {d: [statistics.median(t[f] for t in runs[d]) for f in range(frame_count)] for d in runs}
+    copied = {d: copied_bytes(triangles, frames[d], options) for d in frames}
+    return medians, copied
 
 
 def compare(spec, frame_count, rounds, options):
@@ -85,6 +115,12 @@ def main():
           "that is %.3f%% of the C++ step on %s"
           % (args.overhead_scene, tiny_count, tiny_frames, 1e6 * added, 1e6 * statistics.median(tiny["cpp"]),
              100 * added / (total["cpp"] / frames), args.scene))
+    medians, copied = copy_cost(args.scene, args.frames, args.rounds, options)
+    extra = statistics.median(s - d for s, d in zip(medians["float32"], medians["float64"]))
+    print("C++ step from float64 (%d bytes copied per frame): %.3f ms; from float32 (%d bytes converted): "
+          "%.3f ms; the conversion adds %.1f us per frame (median over frames)"
+          % (copied["float64"], 1e3 * statistics.mean(medians["float64"]), copied["float32"],
+             1e3 * statistics.mean(medians["float32"]), 1e6 * extra))
 
 
 if __name__ == "__main__":

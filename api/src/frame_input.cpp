@@ -1,10 +1,12 @@
-// The facade's input boundary: positions copied into the engine's Frame and checked.
+// The facade's input boundary: positions viewed in place (packed doubles) or converted into
+// the engine's Frame, and checked.
 
 #include "frame_input.hpp"
 
 #include "collidescope/error.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 namespace collidescope::api {
@@ -64,8 +66,27 @@ std::string object_label(std::uint32_t object, const std::string& name) {
     return label;
 }
 
+bool viewable_in_place(const VertexView& view) {
+    // frame_vertices.hpp asserts Vec3 is three packed doubles aligned like a double, which
+    // makes packed doubles at that alignment an array of Vec3.
+    return view.scalar == Scalar::Float64 && view.contiguous() &&
+           reinterpret_cast<std::uintptr_t>(view.data) % alignof(Vec3) == 0;
+}
+
+std::uint64_t take_vertices(const VertexView& view, std::vector<Vec3>& converted, FrameVertices& vertices,
+                            const std::string& label) {
+    if (viewable_in_place(view)) {
+        const std::span<const Vec3> in_place(static_cast<const Vec3*>(view.data), view.count);
+        if (!all_finite(in_place)) report_non_finite(in_place, label);
+        vertices = FrameVertices::view(in_place);
+        return 0;
+    }
+    copy_vertices(view, converted, label);
+    vertices = FrameVertices::view(converted);
+    return std::uint64_t{view.count} * sizeof(Vec3);
+}
+
 void copy_vertices(const VertexView& view, std::vector<Vec3>& vertices, const std::string& label) {
-    static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 is three packed doubles");
     vertices.resize(view.count);
     if (view.count == 0) return;
     if (view.scalar == Scalar::Float64 && view.contiguous()) {

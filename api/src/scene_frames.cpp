@@ -56,7 +56,7 @@ std::span<const std::array<std::uint32_t, 3>> SceneFrames::triangles(std::uint32
 }
 
 std::span<const double> SceneFrames::positions(std::uint32_t object) const {
-    const std::vector<Vec3>& vertices = m_impl->object(object).vertices;
+    const FrameVertices& vertices = m_impl->object(object).vertices;
     return {vertices.empty() ? nullptr : vertices.front().data(), vertices.size() * 3};
 }
 

@@ -1,5 +1,6 @@
-// Session: declared objects, one engine Pipeline, an optional recorder; step() copies the
-// caller's positions into the frame it keeps, runs the pipeline and hands back the pairs.
+// Session: declared objects, one engine Pipeline, an optional recorder; step() hands the
+// caller's positions to the frame it keeps (views of packed doubles, no copy; other layouts
+// converted once), runs the pipeline and hands back the pairs.
 
 #include "collidescope/session.hpp"
 
@@ -35,6 +36,17 @@ PipelineConfig pipeline_config(const SessionOptions& options) {
     return config;
 }
 
+// Empties a frame's vertices when it goes out of scope: the end of a step, by return or throw.
+struct DropViews {
+    Frame& frame;
+    explicit DropViews(Frame& dropped) : frame(dropped) {}
+    DropViews(const DropViews&) = delete;
+    DropViews& operator=(const DropViews&) = delete;
+    ~DropViews() {
+        for (ObjectFrame& object : frame.objects) object.vertices = FrameVertices();
+    }
+};
+
 }  // namespace
 
 struct Session::Impl {
@@ -45,7 +57,11 @@ struct Session::Impl {
     /// object's after set_triangles). They take effect at the next step that succeeds.
     std::vector<std::optional<std::vector<TriIndices>>> pending;
     std::vector<std::uint32_t> topology_from;        ///< per object: frame its topology took effect
-    Frame frame;                                     ///< reused: vertices keep their capacity
+    /// Reused across steps. Its vertices view the caller's memory (or `converted`) only
+    /// during step(); between steps they are empty, so no view outlives the caller's arrays.
+    Frame frame;
+    /// Per object: positions converted from float32 or strided input (capacity reused).
+    std::vector<std::vector<Vec3>> converted;
     FrameResult result;
     std::vector<CollidingPair> pairs;
     std::unique_ptr<recorder::Recorder> recorder;
@@ -80,7 +96,12 @@ void Session::Impl::take_positions(std::span<const VertexView> positions) {
         }
     }
     frame.objects.resize(objects);
-    for (std::uint32_t k = 0; k < objects; ++k) api::copy_vertices(positions[k], frame.objects[k].vertices, label(k));
+    converted.resize(objects);
+    frame.positions_copied_bytes = 0;
+    for (std::uint32_t k = 0; k < objects; ++k) {
+        frame.positions_copied_bytes +=
+            api::take_vertices(positions[k], converted[k], frame.objects[k].vertices, label(k));
+    }
     for (std::uint32_t k = 0; k < objects; ++k) {
         if (!pending[k]) continue;
         auto topology = std::make_shared<Topology>();
@@ -153,6 +174,10 @@ std::span<const CollidingPair> Session::step(std::span<const VertexView> positio
     Impl& impl = *m_impl;
     if (impl.closed) throw std::logic_error("step: the session is closed");
     if (impl.names.empty()) throw InputError("step: no objects declared (add_object before the first step)");
+    // The frame views the caller's memory from here until the step ends, however it ends
+    // (the pipeline and its sinks read it only inside process(); the recorder copies the
+    // positions to float32 there, the background rebuild takes its own copy).
+    const DropViews drop_views{impl.frame};
     impl.take_positions(positions);
     impl.start_recording_once();
     impl.result = impl.pipeline.process(impl.frame);

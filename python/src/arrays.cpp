@@ -2,6 +2,8 @@
 
 #include "arrays.hpp"
 
+#include <bit>
+
 namespace py = pybind11;
 
 namespace collidescope::python {
@@ -46,6 +48,12 @@ py::array positions_array(const py::handle& positions, const std::string& label)
         throw py::value_error(label + ": positions of dtype " + dtype_text(array) + ", expected float32 or float64");
     }
     check_shape(array, label, "positions", "(V, 3)");
+    // The view reads the bytes in place, in this machine's order: an array of the other byte
+    // order ('>f8' here) is converted to native order first (numpy's astype: one copy).
+    constexpr char k_foreign_order = std::endian::native == std::endian::little ? '>' : '<';
+    if (array.dtype().byteorder() == k_foreign_order) {
+        array = array.attr("astype")(array.dtype().attr("newbyteorder")("=")).cast<py::array>();
+    }
     return array;
 }
 

@@ -14,8 +14,9 @@
 
 namespace collidescope::python {
 
-/// `positions` as a (V, 3) float32 or float64 array (any strides, not copied): the array to
-/// keep alive and the view into it. Throws ValueError naming `label` on another dtype or shape.
+/// `positions` as a (V, 3) float32 or float64 array (any strides, not copied; only an array
+/// in the other byte order is converted to native order): the array to keep alive and the
+/// view into it. Throws ValueError naming `label` on another dtype or shape.
 pybind11::array positions_array(const pybind11::handle& positions, const std::string& label);
 VertexView positions_view(const pybind11::array& array);
 

@@ -1,6 +1,7 @@
 // collidescope.Session: the facade's Session for a Python loop. step() checks and views the
-// caller's arrays (no copy of any layout), releases the GIL while the engine runs, and hands
-// the pairs back as one (N, 4) int64 array.
+// caller's arrays (no copy on the Python side; float64 C-contiguous arrays reach the engine
+// with no copy at all), releases the GIL while the engine runs, and hands the pairs back as
+// one (N, 4) int64 array.
 
 #include "arrays.hpp"
 #include "bindings.hpp"
@@ -92,7 +93,9 @@ Session(triangles, self_collision=False, method="adaptive", threads=0, record=No
         policy="cost", names=None, scene="session")
 
 triangles: one (T_i, 3) integer array per object (vertex indices), declared once.
-step(positions): one (V_i, 3) float32 or float64 array per object (any layout, not copied);
+step(positions): one (V_i, 3) float32 or float64 array per object, any layout; a float64
+C-contiguous array is read in place (no copy), others are converted once (stats
+counts.positions_copied_bytes says how many bytes);
 returns the frame's colliding pairs as an (N, 4) int64 array of (objA, triA, objB, triB) rows,
 sorted as `collidescope check --pairs`. The GIL is released while the engine runs.
 stats: the last frame's stats as a dict with the names of `check --stats` (None before a step).

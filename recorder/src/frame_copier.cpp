@@ -7,11 +7,14 @@
 #include "collidescope/stats.hpp"
 
 #include <algorithm>
+#include <span>
 
 namespace collidescope::recorder {
 namespace {
 
-LargeVector<float> to_float(const std::vector<Vec3>& vertices) {
+// Runs on the engine's thread inside on_frame: the frame's vertices may view the caller's
+// memory (Session::step), valid only until the step returns, so the writer thread gets this copy.
+LargeVector<float> to_float(std::span<const Vec3> vertices) {
     LargeVector<float> out(vertices.size() * 3);
     for (std::size_t v = 0; v < vertices.size(); ++v) {
         for (int axis = 0; axis < 3; ++axis) out[3 * v + static_cast<std::size_t>(axis)] = static_cast<float>(vertices[v][axis]);

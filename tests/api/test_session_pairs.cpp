@@ -1,6 +1,7 @@
 // The facade's pairs are the engine's: a Session stepped through every built-in data set
 // (small presets) reports exactly `collidescope check --pairs`, for the default method and
-// the brute-force oracle; and on random scenes exactly the brute-force reference.
+// the brute-force oracle, from packed doubles the engine views in place and from float32 and
+// strided positions it converts; and on random scenes exactly the brute-force reference.
 
 #include "session_helpers.hpp"
 
@@ -16,19 +17,29 @@ namespace {
 using testing::FramePair;
 using testing_files::TempDir;
 
+using testing::Layout;
+
 struct Case {
     const char* scene;
     const char* method;
+    Layout layout = Layout::Packed;
 };
 
 class SessionEqualsCheck : public ::testing::TestWithParam<Case> {};
+
+std::string case_name(const ::testing::TestParamInfo<Case>& test) {
+    static const char* const layouts[] = {"", "_float32", "_padded"};
+    std::string name = std::string(test.param.scene) + "_" + test.param.method + layouts[static_cast<int>(test.param.layout)];
+    for (char& ch : name) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+    return name;
+}
 
 TEST_P(SessionEqualsCheck, EveryFrame) {
     const Case c = GetParam();
     SceneFrames scene = SceneFrames::builtin(c.scene);
     Session session({.method = c.method, .self_collision = scene.self_collision()});
     testing::declare_objects(session, scene);
-    const std::vector<FramePair> ours = testing::session_pairs(session, scene);
+    const std::vector<FramePair> ours = testing::session_pairs(session, scene, c.layout);
 
     const TempDir dir;
     const testing::CliResult check =
@@ -45,12 +56,11 @@ INSTANTIATE_TEST_SUITE_P(DataSets, SessionEqualsCheck,
     ::testing::Values(Case{"A:small", "adaptive"}, Case{"B:small", "adaptive"}, Case{"C:small", "adaptive"},
                       Case{"D:small", "adaptive"}, Case{"E1:small", "adaptive"}, Case{"E2:small", "adaptive"},
                       Case{"E3:small", "adaptive"}, Case{"E4:small", "adaptive"}, Case{"demo:small", "adaptive"},
-                      Case{"C:small", "aabb"}, Case{"B:small", "brute"}),
-    [](const auto& test) {
-        std::string name = std::string(test.param.scene) + "_" + test.param.method;
-        for (char& ch : name) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
-        return name;
-    });
+                      Case{"C:small", "aabb"}, Case{"B:small", "brute"},
+                      // The converting paths against the same oracle (the fast path above).
+                      Case{"C:small", "aabb", Layout::Float32}, Case{"C:small", "aabb", Layout::Padded},
+                      Case{"D:small", "adaptive", Layout::Float32}, Case{"E2:small", "adaptive", Layout::Padded}),
+    case_name);
 
 // Random scenes of soups and crumpled sheets (touching, coplanar, degenerate triangles), self
 // collision on and off: every frame's pairs equal the brute-force reference.

@@ -26,7 +26,7 @@ PositionFrames write_mesh_and_frames(const Scene& scene, std::uint32_t object, c
     PositionFrames frames;
     MeshData first;
     for (const Frame& frame : testing::all_frames(scene)) {
-        frames.push_back(frame.objects[object].vertices);
+        frames.push_back(frame.objects[object].vertices.to_vector());
         if (frame.index == 0) first.triangles = frame.objects[object].topology->triangles;
     }
     first.vertices = frames.front();

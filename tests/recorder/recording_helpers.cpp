@@ -43,7 +43,7 @@ public:
         frame.stats = report.stats;
         frame.pairs.assign(report.colliding_pairs.begin(), report.colliding_pairs.end());
         for (const ObjectFrame& object : report.frame.objects) {
-            frame.vertices.push_back(object.vertices);
+            frame.vertices.push_back(object.vertices.to_vector());  // a view lives only during on_frame
             frame.triangles.push_back(object.topology->triangles);
         }
         frames.push_back(std::move(frame));

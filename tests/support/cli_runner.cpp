@@ -190,7 +190,7 @@ std::vector<std::string> write_scene_files(const Scene& scene, const std::filesy
     for (std::uint32_t f = 0; f < scene.source->frame_count(); ++f) {
         const Frame frame = scene.source->frame(f);
         for (std::uint32_t o = 0; o < frame.objects.size(); ++o) {
-            const MeshData mesh{frame.objects[o].vertices, frame.objects[o].topology->triangles};
+            const MeshData mesh{frame.objects[o].vertices.to_vector(), frame.objects[o].topology->triangles};
             write_ply(directory / frame_file_name(scene.source->object_name(o), first_number + static_cast<int>(f)), mesh);
         }
     }

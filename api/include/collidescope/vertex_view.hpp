@@ -3,7 +3,8 @@
 ///
 /// A view names V vertices of x, y, z as float or double at any byte strides, so an array in
 /// any layout (a std::vector of structs, a numpy array, a column of an SoA buffer) is read
-/// where it lies. The caller owns the memory; it must stay valid and unchanged during step().
+/// where it lies: packed doubles by the engine itself (no copy), other layouts once, into
+/// doubles. The caller owns the memory; it must stay valid and unchanged during step() only.
 
 #include <cstddef>
 #include <cstdint>

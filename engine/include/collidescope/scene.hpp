@@ -5,6 +5,7 @@
 /// large meshes never need to sit in memory whole. Topology is shared between frames and
 /// changes only when a frame's triangles differ (a fractured mesh); its revision says so.
 
+#include "collidescope/frame_vertices.hpp"
 #include "collidescope/mesh.hpp"
 #include "collidescope/types.hpp"
 
@@ -29,7 +30,9 @@ struct Topology {
 /// One object in one frame.
 struct ObjectFrame {
     std::shared_ptr<const Topology> topology;
-    std::vector<Vec3> vertices;  ///< size == topology->vertex_count
+    /// size == topology->vertex_count. Owned by sources that read or generate positions; a
+    /// view of the caller's memory from Session::step (FrameVertices says how long it lives).
+    FrameVertices vertices;
 
     std::array<Vec3, 3> corners(std::uint32_t tri) const {
         const TriIndices& t = topology->triangles[tri];
@@ -42,10 +45,16 @@ struct ObjectFrame {
 /// Topology built outside a FrameSource (the embedding facade's objects).
 std::uint64_t next_topology_revision();
 
-/// All objects of one frame, in input order.
+/// All objects of one frame, in input order. A frame whose vertices view caller memory is
+/// valid only while that memory is: the engine reads it only inside Pipeline::process.
 struct Frame {
     std::uint32_t index = 0;  ///< frame number, from 0
     std::vector<ObjectFrame> objects;
+    /// Bytes of positions converted at the input boundary to make this frame: the facade's
+    /// step converts float32 or strided positions into doubles (V * 24 bytes per such object)
+    /// and views packed doubles in place (0). Sources that read or generate positions leave
+    /// 0. The update stage reports it as counts.positions_copied_bytes.
+    std::uint64_t positions_copied_bytes = 0;
 };
 
 /// Hands out the frames of an animation. Not thread-safe: one caller at a time.

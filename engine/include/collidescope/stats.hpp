@@ -44,6 +44,10 @@ struct FrameCounts {
     std::uint64_t rebuilds = 0;          ///< hierarchies built this frame, engine thread or worker (Mode 1)
     std::uint64_t exact_shortcuts = 0;   ///< predicate calls the float filter left open and the
                                          ///< cheap exact stage decided (no expansions)
+    /// Bytes of positions converted at the input boundary (Frame::positions_copied_bytes): 0
+    /// when the embedding facade viewed the caller's packed doubles in place, V * 24 per
+    /// object it converted (float32, strided); 0 for scenes read or generated.
+    std::uint64_t positions_copied_bytes = 0;
 };
 
 /// Calls `visit(name, milliseconds)` for every StageTimes field in declaration order. This
@@ -77,6 +81,7 @@ void for_each_count(const FrameCounts& counts, Visitor&& visit) {
     visit("nodes_visited", counts.nodes_visited);
     visit("rebuilds", counts.rebuilds);
     visit("exact_shortcuts", counts.exact_shortcuts);
+    visit("positions_copied_bytes", counts.positions_copied_bytes);
 }
 
 /// Bits of AabbFrameInfo::rebuild_reasons (the same values as bvh::RebuildReason).

@@ -134,7 +134,8 @@ void ObjectTrees::hand_to_worker(const Frame& frame, std::span<const std::uint32
     std::vector<RebuildJob> jobs;
     for (const std::uint32_t object : objects) {
         const ObjectFrame& mesh = frame.objects[object];
-        jobs.push_back({object, mesh.topology, mesh.vertices, frame.index, reason});
+        // The worker outlives this frame, whose vertices may view caller memory: it gets a copy.
+        jobs.push_back({object, mesh.topology, mesh.vertices.to_vector(), frame.index, reason});
         m_trees[object].pending = true;
     }
     m_background.start(std::move(jobs));

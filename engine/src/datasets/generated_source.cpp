@@ -52,9 +52,10 @@ private:
     static ObjectFrame object_frame(const GeneratedObject& object, std::uint32_t index) {
         ObjectFrame result;
         result.topology = topology_at(object, index);
-        result.vertices.resize(result.topology->vertex_count);
-        object.vertices(index, result.vertices);
-        for (Vec3& vertex : result.vertices) vertex = round_to_float32(vertex);
+        std::vector<Vec3> vertices(result.topology->vertex_count);
+        object.vertices(index, vertices);
+        for (Vec3& vertex : vertices) vertex = round_to_float32(vertex);
+        result.vertices = std::move(vertices);
         return result;
     }
 

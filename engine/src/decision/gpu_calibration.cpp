@@ -17,11 +17,11 @@ namespace {
 // An n x n grid of quads (2 n^2 triangles) over [0, 1]^2 at height phase-shifted waves.
 ObjectFrame wavy_sheet(std::uint32_t n, double sign, std::uint64_t revision) {
     auto topology = std::make_shared<Topology>();
-    ObjectFrame sheet;
+    std::vector<Vec3> vertices;
     for (std::uint32_t y = 0; y <= n; ++y) {
         for (std::uint32_t x = 0; x <= n; ++x) {
             const double u = double(x) / n, v = double(y) / n;
-            sheet.vertices.emplace_back(u, v, sign * 0.05 * std::sin(12.0 * u) * std::cos(9.0 * v));
+            vertices.emplace_back(u, v, sign * 0.05 * std::sin(12.0 * u) * std::cos(9.0 * v));
         }
     }
     for (std::uint32_t y = 0; y < n; ++y) {
@@ -31,10 +31,9 @@ ObjectFrame wavy_sheet(std::uint32_t n, double sign, std::uint64_t revision) {
             topology->triangles.push_back({a, d, c});
         }
     }
-    topology->vertex_count = static_cast<std::uint32_t>(sheet.vertices.size());
+    topology->vertex_count = static_cast<std::uint32_t>(vertices.size());
     topology->revision = revision;
-    sheet.topology = std::move(topology);
-    return sheet;
+    return {std::move(topology), std::move(vertices)};
 }
 
 // Milliseconds of one frame of the `gpu` method (the cull, then the exact test) on two n x n

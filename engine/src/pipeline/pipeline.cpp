@@ -49,6 +49,7 @@ FrameResult Pipeline::process(const Frame& frame) {
         assert(object.vertices.size() == object.topology->vertex_count);
         stats.counts.triangles += object.triangle_count();
     }
+    stats.counts.positions_copied_bytes = frame.positions_copied_bytes;
     stats.ms.update = stage.lap_ms();
 
     // 2. Object level.
