@@ -96,3 +96,12 @@ echo "2 ranks x 1 thread, virtual join: $v21 s ($(grep 'joined the' run.log)); v
 echo "speed-up: $(echo "$s11 / $v21" | bc -l | xargs printf '%.2f')x"
 "$bin" compare s11.h5 v21.h5 > /dev/null && echo "pairs identical (compare exit 0)"
 rm -rf s11.h5 v21.h5 v21.h5.parts
+
+echo "== $(date -u '+%F %T') UTC, load average: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "== the same per core: serial under taskset -c 0, ranks bound one core each"
+/usr/bin/time -f "serial, taskset -c 0: wall %e s, user %U, sys %S, cpu %P" \
+  taskset -c 0 "$bin" record --scene "$record_scene" --method aabb --threads 1 -q -o s1.h5
+/usr/bin/time -f "2 ranks, --bind-to core: wall %e s, user %U, sys %S, cpu %P" \
+  mpirun --oversubscribe --bind-to core --map-by core -np 2 "$bin" record --scene "$record_scene" --method aabb --threads 1 -q -o p2.h5
+"$bin" compare s1.h5 p2.h5 > /dev/null && echo "pairs identical (compare exit 0)"
+rm -rf s1.h5 p2.h5 p2.h5.parts
