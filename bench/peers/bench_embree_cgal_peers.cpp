@@ -288,8 +288,9 @@ int check_rule(std::uint64_t pairs) {
     frame.objects.push_back({topology, std::vector<Vec3>(6)});
     std::uint64_t differ = 0, hits = 0;
     for (std::uint64_t k = 0; k < pairs; ++k) {
-        for (Vec3& v : frame.objects[0].vertices)
-            v = Vec3(coordinate(random), coordinate(random), coordinate(random));
+        std::vector<Vec3> vertices(6);
+        for (Vec3& v : vertices) v = Vec3(coordinate(random), coordinate(random), coordinate(random));
+        frame.objects[0].vertices = std::move(vertices);
         const auto corner = [&] { return static_cast<std::uint32_t>(index(random)); };
         for (TriIndices& t : topology->triangles) t = {corner(), corner(), corner()};
         const TrianglePair pair{0, 0, 0, 1};
