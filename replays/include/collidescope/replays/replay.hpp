@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace collidescope::replays {
@@ -46,6 +47,11 @@ struct ReplaySummary {
 /// Checks a clip's name for ReplayOptions::video: ".mp4" or ".gif" (any case), else throws
 /// InputError naming the file and the formats known. Touches no file.
 void check_video_path(const std::filesystem::path& path);
+
+/// The scene frame numbers of the first and the last frame replay() would render for
+/// `options` (its frame range, not its part). Throws as replay() when there is none.
+std::pair<std::uint32_t, std::uint32_t> replayed_frames(const std::filesystem::path& recording,
+                                                        const ReplayOptions& options);
 
 /// Replays `recording` into `options.output_dir`/frame_NNNN.png (NNNN = the scene frame number)
 /// and/or the clip `options.video`. Throws InputError naming the file (unreadable or corrupt
