@@ -168,7 +168,7 @@ int run_replay(const ReplayCliOptions& cli) {
         if (bar) bar->advance();
         ++done;
         expected = total;
-        if (interrupt.signal() != 0) throw Interrupted{};
+        if (interrupt.signal() != 0 && done < total) throw Interrupted{};
     };
     auto stopped = [&] {
         if (bar) bar->finish();

@@ -41,6 +41,10 @@ struct State {
     std::int64_t frame = -1;  ///< the frame being read or processed, -1 before the first
     std::vector<TextOutput> texts;
     std::vector<std::string> recordings;  ///< targets; parts are recording_part(target, r)
+    /// Under MPI, SIGINT and SIGTERM are caught for the whole run: mpirun passes Ctrl-C on to
+    /// every rank as SIGTERM, and a rank that finished its block and waits for the others (or
+    /// assembles the outputs) must not die of it, or mpirun kills the ranks still stopping.
+    std::optional<InterruptGuard> interrupt;
     std::vector<double> summary_values;   ///< summed over the ranks for summary_line
     std::function<std::string(const std::vector<double>&)> summary_line;
     bool summary_on_stdout = false;
@@ -210,9 +214,11 @@ Session::Session(int& argc, char**& argv) {
     MPI_Bcast(&pid, 1, MPI_LONG, 0, MPI_COMM_WORLD);
     g_state.job = pid;
     g_state.active = g_state.size > 1;
+    if (g_state.active) g_state.interrupt.emplace();
 }
 
 Session::~Session() {
+    g_state.interrupt.reset();
     int initialized = 0, finalized = 0;
     MPI_Initialized(&initialized);
     MPI_Finalized(&finalized);
