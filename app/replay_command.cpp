@@ -173,10 +173,11 @@ int run_replay(const ReplayCliOptions& cli) {
     auto stopped = [&] {
         if (bar) bar->finish();
         const int signal = interrupt.signal();
-        std::string line = "replay: interrupted by " + signal_name(signal) + " after " + std::to_string(done) + " of " +
-                           std::to_string(expected) + " frames";
-        if (!cli.output.empty()) line += "; every PNG written to " + cli.output + " is complete";
+        // "replay: interrupted by SIGINT[; clip.mp4 not written]; 12 of 60 frames rendered[, every PNG in DIR complete]"
+        std::string line = "replay: interrupted by " + signal_name(signal);
         if (!cli.video.empty()) line += "; " + cli.video + " not written";
+        line += "; " + std::to_string(done) + " of " + std::to_string(expected) + " frames rendered";
+        if (!cli.output.empty()) line += ", every PNG in " + cli.output + " complete";
         std::fprintf(stderr, "%s\n", line.c_str());
         return interrupted_exit_code(signal);
     };
