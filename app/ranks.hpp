@@ -47,6 +47,12 @@ bool parallel();
 /// True serially and on rank 0: the process that prints the run's own lines (totals, notes)
 /// and shows a progress bar.
 bool leader();
+/// A last step of the run on rank 0 (rank 0's `step` is kept, the others' ignored), run when
+/// every rank finished its command without error or signal (exit 0 or 1) and its outputs were
+/// assembled: e.g. encoding a clip from every rank's frames. It prints its own lines; its exit
+/// code becomes the run's when larger, and an exception it throws becomes one error line and
+/// exit 2. Serially it does nothing (the command does the work itself).
+void when_done(std::function<int()> step);
 /// A line the run prints once, from the sums over the ranks of `values`: under MPI rank 0
 /// prints `line(sums)` on stderr (stdout: `on_stdout`) when every rank is done (only when every rank registered as
 /// many values: a rank that failed did not), so a run prints one line where each rank would

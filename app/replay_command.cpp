@@ -54,7 +54,8 @@ only one of them found in green. --video FILE.mp4|FILE.gif encodes the frames as
 clip leaves no file. See docs/replay.md.
 SIGINT or SIGTERM stops after the frames being rendered: every PNG written is complete.
 Under mpirun (docs/mpi.md) each rank renders one block of the frames into DIR, the same files
-a serial replay writes; --video and --diff run serially only.
+a serial replay writes; with --video (which then needs -o DIR) rank 0 encodes the clip from
+them at the end; --diff runs serially only.
 Exit codes: 0 written (--diff: same pairs), 1 (--diff only) the pairs differ, 2 error, 130 or
 143 stopped by SIGINT or SIGTERM (with --video: the clip is not written).)";
 
@@ -99,13 +100,15 @@ replays::ReplayOptions replay_options(const ReplayCliOptions& cli) {
 }
 
 // Under mpirun: this rank's block of the replayed frames (scene frame numbers), rendered with
-// the camera, timeline and contact sheet choice of the whole replay; the sheet is rank 0's.
-// Returns the scene frame numbers of the first and last replayed frame.
-std::pair<std::uint32_t, std::uint32_t> take_block(const std::string& recording, replays::ReplayOptions& options) {
-    const std::pair<std::uint32_t, std::uint32_t> frames = replays::replayed_frames(recording, options);
-    const FrameRange block = ranks::block({frames.first, frames.second + 1});
+// the camera, timeline and contact sheet choice of the whole replay; the sheet is rank 0's, and
+// so is the clip, encoded from every rank's PNGs at the end (replay_in_parallel_end). Returns
+// the scene frame numbers of the replayed frames.
+std::vector<std::uint32_t> take_block(const std::string& recording, replays::ReplayOptions& options) {
+    const std::vector<std::uint32_t> frames = replays::replayed_frames(recording, options);
+    const FrameRange block = ranks::block({frames.front(), frames.back() + 1});
     options.part_begin = block.begin;
     options.part_end = block.end;
+    options.video.clear();
     if (!ranks::leader()) options.contact_sheet.clear();
     return frames;
 }
@@ -114,6 +117,31 @@ std::string png_name(std::uint32_t frame) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04u.png", frame);
     return name;
+}
+
+// Under mpirun, once every rank is done, rank 0 prints the serial run's `wrote` line and
+// encodes the clip (--video) from the PNGs every rank wrote, in frame order.
+void replay_in_parallel_end(const ReplayCliOptions& cli, const replays::ReplayOptions& options,
+                            const std::vector<std::uint32_t>& frames, std::uint64_t written) {
+    const std::string output = cli.output;
+    const std::string first = png_name(frames.front()), last = png_name(frames.back());
+    ranks::summary_line({double(written)}, [output, first, last](const std::vector<double>& sums) {
+        return "wrote " + std::to_string(static_cast<std::uint64_t>(sums[0])) + " frames to " + output + " (" + first +
+               " .. " + last + ")";
+    }, true);
+    if (cli.video.empty()) return;
+    replays::ReplayOptions whole = options;
+    whole.video = cli.video;
+    const std::string recording = cli.recordings[0];
+    ranks::when_done([recording, whole, frames] {
+        std::vector<std::filesystem::path> pngs;
+        for (const std::uint32_t frame : frames) pngs.push_back(whole.output_dir / png_name(frame));
+        const replays::ReplaySummary clip = replays::encode_pngs_as_video(recording, pngs, whole);
+        std::printf("video: %s (%llu frames at %g fps, %.2f s of encoding)\n", clip.video.c_str(),
+                    static_cast<unsigned long long>(clip.frames), clip.video_fps, clip.video_seconds);
+        std::fflush(stdout);
+        return 0;
+    });
 }
 
 std::string rate_line(const replays::ReplaySummary& summary, const replays::ReplayOptions& options) {
@@ -142,12 +170,12 @@ int run_replay(const ReplayCliOptions& cli) {
         throw InputError(cli.diff ? "replay --diff needs -o DIR" : "replay needs -o DIR (PNG frames), --video FILE, or both");
     }
     if (cli.diff && !cli.video.empty()) throw InputError("--video does not go with --diff (use -o DIR)");
-    if (ranks::parallel() && (cli.diff || !cli.video.empty())) {
-        throw InputError(std::string(cli.diff ? "--diff" : "--video") +
-                         " does not run frame-parallel: run it without mpirun (replay -o DIR does run under mpirun)");
+    if (ranks::parallel() && cli.diff) throw InputError("--diff does not run frame-parallel: run it without mpirun");
+    if (ranks::parallel() && cli.output.empty()) {
+        throw InputError("under mpirun, --video needs -o DIR: the ranks write the frames there, rank 0 encodes them");
     }
     replays::ReplayOptions options = replay_options(cli);
-    std::pair<std::uint32_t, std::uint32_t> replayed{};
+    std::vector<std::uint32_t> replayed;
     if (ranks::parallel()) replayed = take_block(cli.recordings[0], options);
     // Every frame allocates a few image-sized buffers (3.7 MB at 1280x720: read back, PNG
     // filter rows, deflate output). Above glibc's mmap threshold each is mapped and unmapped
@@ -208,12 +236,7 @@ int run_replay(const ReplayCliOptions& cli) {
     }
     if (!cli.quiet) std::fprintf(stderr, "%s\n", rate_line(summary, options).c_str());
     if (ranks::parallel()) {
-        // One line for the run, printed by rank 0 when every rank is done.
-        const std::string output = cli.output;
-        ranks::summary_line({double(summary.frames)}, [output, replayed](const std::vector<double>& sums) {
-            return "wrote " + std::to_string(static_cast<std::uint64_t>(sums[0])) + " frames to " + output + " (" +
-                   png_name(replayed.first) + " .. " + png_name(replayed.second) + ")";
-        }, true);
+        replay_in_parallel_end(cli, options, replayed, summary.frames);
     } else if (!summary.files.empty()) {
         std::printf("wrote %llu frames to %s (%s .. %s)\n", static_cast<unsigned long long>(summary.frames),
                     cli.output.c_str(), summary.files.front().filename().c_str(), summary.files.back().filename().c_str());

@@ -48,6 +48,7 @@ struct State {
     std::vector<double> summary_values;   ///< summed over the ranks for summary_line
     std::function<std::string(const std::vector<double>&)> summary_line;
     bool summary_on_stdout = false;
+    std::function<int()> last_step;  ///< rank 0's when_done
 };
 
 State g_state;
@@ -158,6 +159,16 @@ void print_summary() {
     out << g_state.summary_line(sums) + '\n' << std::flush;
 }
 
+// Rank 0: the command's last step (when_done), its code if larger than `code`.
+int run_last_step(int code) {
+    try {
+        return std::max(code, g_state.last_step());
+    } catch (const std::exception& error) {
+        print_line("error: " + std::string(error.what()));
+        return 2;
+    }
+}
+
 // Rank 0, when ranks were stopped by SIGINT or SIGTERM (mpirun passes Ctrl-C on as SIGTERM):
 // one line saying which, after their own lines.
 void print_interrupted(const std::vector<int>& codes) {
@@ -253,6 +264,7 @@ int Session::finish(int code) {
     }
     print_summary();
     if (g_state.rank == 0) print_interrupted(codes);
+    if (g_state.rank == 0 && complete && combined < 2 && g_state.last_step) combined = run_last_step(combined);
 
     if (g_state.rank == 0) {
         for (const std::string& target : g_state.recordings) combined = assemble_recording(target, codes, combined);
@@ -266,6 +278,10 @@ int Session::finish(int code) {
 bool parallel() { return g_state.active; }
 
 bool leader() { return g_state.rank == 0; }
+
+void when_done(std::function<int()> step) {
+    if (g_state.active && g_state.rank == 0) g_state.last_step = std::move(step);
+}
 
 void summary_line(std::vector<double> values, std::function<std::string(const std::vector<double>&)> line, bool on_stdout) {
     if (!g_state.active) return;

@@ -42,19 +42,6 @@ std::filesystem::path frame_file(const std::filesystem::path& dir, const char* p
     return dir / name;
 }
 
-// The clip's frame rate: the recording's `fps`; else, when it has frame times (a point cache
-// with times but no rate), one over the median step between them; else 30.
-double clip_fps(const recorder::Recording& recording) {
-    if (recording.fps() > 0) return recording.fps();
-    const std::vector<double> times = recording.frame_times();
-    std::vector<double> steps;
-    for (std::size_t k = 1; k < times.size(); ++k) {
-        if (times[k] > times[k - 1]) steps.push_back(times[k] - times[k - 1]);
-    }
-    if (steps.empty()) return 30.0;
-    std::nth_element(steps.begin(), steps.begin() + std::ptrdiff_t(steps.size() / 2), steps.end());
-    return std::clamp(1.0 / steps[steps.size() / 2], 1.0, 1000.0);
-}
 
 // The clip, opened before any frame is rendered (a bad path fails at once), at clip_fps.
 std::unique_ptr<OrderedVideo> open_ordered_video(const RecordingData& data, const ReplayOptions& options,
@@ -106,11 +93,25 @@ std::vector<std::uint64_t> render_jobs(const RecordingData& data, const std::vec
 
 }  // namespace
 
-std::pair<std::uint32_t, std::uint32_t> replayed_frames(const std::filesystem::path& recording,
-                                                        const ReplayOptions& options) {
+// The clip's frame rate (replay_common.hpp): the recording's `fps`; else, when it has frame times (a point cache
+// with times but no rate), one over the median step between them; else 30.
+double clip_fps(const recorder::Recording& recording) {
+    if (recording.fps() > 0) return recording.fps();
+    const std::vector<double> times = recording.frame_times();
+    std::vector<double> steps;
+    for (std::size_t k = 1; k < times.size(); ++k) {
+        if (times[k] > times[k - 1]) steps.push_back(times[k] - times[k - 1]);
+    }
+    if (steps.empty()) return 30.0;
+    std::nth_element(steps.begin(), steps.begin() + std::ptrdiff_t(steps.size() / 2), steps.end());
+    return std::clamp(1.0 / steps[steps.size() / 2], 1.0, 1000.0);
+}
+
+std::vector<std::uint32_t> replayed_frames(const std::filesystem::path& recording, const ReplayOptions& options) {
     const RecordingData data(recording);
-    const std::vector<std::uint64_t> rows = replay_rows(data, options);
-    return {data.indices()[rows.front()], data.indices()[rows.back()]};
+    std::vector<std::uint32_t> frames;
+    for (const std::uint64_t row : replay_rows(data, options)) frames.push_back(data.indices()[row]);
+    return frames;
 }
 
 CameraSpec resolved_camera(const CameraSpec& camera, const RecordingData& data) {

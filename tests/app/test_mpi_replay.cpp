@@ -1,6 +1,6 @@
 // Under mpirun (app/ranks.hpp, docs/mpi.md), beyond the blocks of test_mpi_ranks.cpp: `replay`
-// on 2 and 3 ranks writes the serial replay's PNGs and contact sheet byte for byte, and refuses
-// --video; `check` prints one total line for the run, in the serial line's form; Ctrl-C (SIGINT
+// on 2 and 3 ranks writes the serial replay's PNGs, contact sheet and clip byte for byte;
+// `check` prints one total line for the run, in the serial line's form; Ctrl-C (SIGINT
 // to mpirun) stops every rank of a `record` after its current frame, with the documented line
 // and exit code, and leaves parts that `validate` and `join --allow-incomplete` read.
 
@@ -76,15 +76,28 @@ TEST(MpiReplay, TwoAndThreeRanksWriteTheSerialPngsAndContactSheetByteForByte) {
     }
 }
 
-TEST(MpiReplay, VideoIsRefusedWithOneLine) {
+// Rank 0 encodes the clip from every rank's PNGs once they are written: the serial clip, byte
+// for byte (the encoder sees the same pixels, in the same order).
+TEST(MpiReplay, VideoIsEncodedByRankZeroAsTheSerialClip) {
     COLLIDESCOPE_REQUIRE_MPI();
     TempDir dir;
-    ASSERT_EQ(testing::run_cli({"record", "--scene", "D:small", "--frames", ":4", "-q", "-o", "run.h5"}, dir.path()).exit_code, 0);
-    const CliResult parallel = run_mpi(2, {"replay", "run.h5", "--video", "clip.mp4", "--size", "128x96"}, dir.path());
-    EXPECT_EQ(parallel.exit_code, 2);
-    EXPECT_NE(parallel.err.find("rank 0 of 2: --video does not run frame-parallel: run it without mpirun"), std::string::npos)
-        << parallel.err;
-    EXPECT_FALSE(fs::exists(dir / "clip.mp4"));
+    ASSERT_EQ(testing::run_cli({"record", "--scene", "D:small", "--frames", ":9", "-q", "-o", "run.h5"}, dir.path()).exit_code, 0);
+    const std::vector<std::string> replay = {"replay", "run.h5", "--size", "128x96", "--threads", "1", "-q"};
+    for (const std::string clip : {"clip.mp4", "clip.gif"}) {
+        SCOPED_TRACE(clip);
+        const CliResult serial = testing::run_cli(with(replay, {"-o", "serial", "--video", "serial-" + clip}), dir.path());
+        ASSERT_EQ(serial.exit_code, 0) << serial.err;
+        const CliResult parallel = run_mpi(2, with(replay, {"-o", "mpi", "--video", "mpi-" + clip}), dir.path());
+        ASSERT_EQ(parallel.exit_code, 0) << parallel.err;
+        EXPECT_NE(parallel.out.find("video: mpi-" + clip + " (9 frames at "), std::string::npos) << parallel.out;
+        ASSERT_TRUE(fs::exists(dir / ("mpi-" + clip)));
+        EXPECT_TRUE(testing::read_text(dir / ("mpi-" + clip)) == testing::read_text(dir / ("serial-" + clip)));
+    }
+    // The ranks need somewhere to put the frames.
+    const CliResult alone = run_mpi(2, with(replay, {"--video", "alone.mp4"}), dir.path());
+    EXPECT_EQ(alone.exit_code, 2);
+    EXPECT_NE(alone.err.find("rank 0 of 2: under mpirun, --video needs -o DIR"), std::string::npos) << alone.err;
+    EXPECT_FALSE(fs::exists(dir / "alone.mp4"));
 }
 
 // "total: F frames, C with collisions, P colliding pairs, T ms" -> "F C P".
