@@ -2,7 +2,8 @@
 // on 2 and 3 ranks writes the serial replay's PNGs, contact sheet and clip byte for byte;
 // `check` prints one total line for the run, in the serial line's form; Ctrl-C (SIGINT
 // to mpirun) stops every rank of a `record` after its current frame, with the documented line
-// and exit code, and leaves parts that `validate` and `join --allow-incomplete` read.
+// and exit code, and leaves parts that `validate` and `join --allow-incomplete` read; and of a
+// `check`, leaving one partial pairs file with every rank's finished frames and one total line.
 
 #include "mpi_run.hpp"
 
@@ -19,7 +20,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <functional>
 #include <regex>
 #include <thread>
 
@@ -136,8 +139,35 @@ std::uint64_t frames_complete_now(const fs::path& file) {
     }
 }
 
-// Ctrl-C at a terminal sends SIGINT to mpirun (the ranks are in process groups of their own);
-// Open MPI 4.1 passes it on to the ranks as SIGTERM (docs/mpi.md).
+// Runs `command` (mpirun_command without a time limit: the shell execs mpirun), sends mpirun
+// SIGINT once `ready()` holds, as Ctrl-C at a terminal does (the ranks are in process groups of
+// their own; Open MPI 4.1 passes it on to them as SIGTERM, docs/mpi.md), and returns mpirun's
+// wait status. Fails the test when the run ended before `ready()` or still ran after 240 s.
+int sigint_to_mpirun_when(const std::string& command, const std::function<bool()>& ready) {
+    std::vector<std::string> words = {"/bin/sh", "-c", command};
+    std::vector<char*> argv;
+    for (std::string& word : words) argv.push_back(word.data());
+    argv.push_back(nullptr);
+    pid_t mpirun = -1;
+    EXPECT_EQ(posix_spawn(&mpirun, "/bin/sh", nullptr, nullptr, argv.data(), environ), 0);
+    if (mpirun <= 0) return -1;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(240);
+    bool sent = false;
+    int status = 0;
+    while (std::chrono::steady_clock::now() < deadline) {
+        if (waitpid(mpirun, &status, WNOHANG) == mpirun) {
+            EXPECT_TRUE(sent) << "the run ended before it was ready for SIGINT";
+            return status;
+        }
+        if (!sent && ready()) sent = kill(mpirun, SIGINT) == 0;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    kill(mpirun, SIGKILL);
+    waitpid(mpirun, &status, 0);
+    ADD_FAILURE() << "mpirun still ran 240 s after the start" << (sent ? " (it hung after SIGINT)" : "");
+    return -1;
+}
+
 TEST(MpiInterrupt, SigintToMpirunStopsEveryRankAfterItsFrameAndKeepsTheParts) {
     COLLIDESCOPE_REQUIRE_MPI();
     TempDir dir;
@@ -146,32 +176,10 @@ TEST(MpiInterrupt, SigintToMpirunStopsEveryRankAfterItsFrameAndKeepsTheParts) {
     const std::string command = testing_mpi::mpirun_command(
         2, {"record", "--scene", "C", "--method", "aabb", "--threads", "1", "--queue-memory", "2M", "-q", "-o", "run.h5"},
         dir.path(), 0);
-    std::vector<std::string> words = {"/bin/sh", "-c", command};
-    std::vector<char*> argv;
-    for (std::string& word : words) argv.push_back(word.data());
-    argv.push_back(nullptr);
-    pid_t mpirun = -1;  // the shell execs mpirun: this is mpirun's pid
-    ASSERT_EQ(posix_spawn(&mpirun, "/bin/sh", nullptr, nullptr, argv.data(), environ), 0);
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(240);
-    bool sent = false;
-    int status = 0;
-    bool ended = false;
-    while (std::chrono::steady_clock::now() < deadline) {
-        if (waitpid(mpirun, &status, WNOHANG) == mpirun) {
-            ended = true;
-            break;
-        }
-        if (!sent && frames_complete_now(dir / "run.h5.rank0.h5") >= 3 && frames_complete_now(dir / "run.h5.rank1.h5") >= 3) {
-            sent = kill(mpirun, SIGINT) == 0;
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    if (!ended) {
-        kill(mpirun, SIGKILL);
-        waitpid(mpirun, &status, 0);
-        FAIL() << "mpirun still ran 240 s after the start" << (sent ? " (it hung after SIGINT)" : "");
-    }
-    ASSERT_TRUE(sent) << "the run ended before both ranks had written 3 frames";
+    const int status = sigint_to_mpirun_when(command, [&] {
+        return frames_complete_now(dir / "run.h5.rank0.h5") >= 3 && frames_complete_now(dir / "run.h5.rank1.h5") >= 3;
+    });
+    ASSERT_FALSE(HasFailure());
     // mpirun's own code for a job it aborted: 1 (not the ranks' 143).
     EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << status;
     const std::string err = testing::read_text(dir / "mpi.stderr");
@@ -193,6 +201,37 @@ TEST(MpiInterrupt, SigintToMpirunStopsEveryRankAfterItsFrameAndKeepsTheParts) {
     const CliResult joined = testing::run_cli(with({"join", "--allow-incomplete", "-o", "kept.h5"}, parts), dir.path());
     ASSERT_EQ(joined.exit_code, 0) << joined.err;
     EXPECT_EQ(testing::run_cli({"validate", "--allow-incomplete", "kept.h5"}, dir.path()).exit_code, 0);
+}
+
+TEST(MpiInterrupt, SigintToMpirunStopsACheckWithOnePartialOutputAndOneTotalLine) {
+    COLLIDESCOPE_REQUIRE_MPI();
+    TempDir dir;
+    const std::vector<std::string> check = {"check", "--scene", "C", "--method", "aabb", "--threads", "1", "--exit-zero"};
+    ASSERT_EQ(testing::run_cli(with(check, {"-q", "--pairs", "serial.tsv"}), dir.path()).exit_code, 0);
+    const std::vector<testing::FramePair> serial = testing::parse_pairs_tsv(testing::read_text(dir / "serial.tsv"));
+    // Each rank logs a line per frame: SIGINT once rank 0 finished frame 8 and rank 1 frame 103
+    // (both have pairs by then: C has none before frame 5).
+    const int status = sigint_to_mpirun_when(testing_mpi::mpirun_command(2, with(check, {"--pairs", "pairs.tsv"}), dir.path(), 0),
+                                             [&] {
+                                                 const std::string err = testing::read_text(dir / "mpi.stderr");
+                                                 return err.find("frame 8:") != std::string::npos &&
+                                                        err.find("frame 103:") != std::string::npos;
+                                             });
+    ASSERT_FALSE(HasFailure());
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << status;
+    const std::string err = testing::read_text(dir / "mpi.stderr");
+    EXPECT_NE(err.find("collidescope: interrupted: rank(s) 0, 1 of 2 stopped by SIGTERM"), std::string::npos) << err;
+    EXPECT_NE(err.find("partial output: pairs.tsv.partial\n"), std::string::npos) << err;
+    EXPECT_NE(err.find("\ntotal: "), std::string::npos) << err;
+    EXPECT_EQ(err.find("total:"), err.rfind("total:")) << "one total line: " << err;
+    // The partial output: a prefix of each block's pairs, in frame order (every finished frame).
+    EXPECT_FALSE(fs::exists(dir / "pairs.tsv"));
+    const std::vector<testing::FramePair> kept = testing::parse_pairs_tsv(testing::read_text(dir / "pairs.tsv.partial"));
+    EXPECT_TRUE(std::is_sorted(kept.begin(), kept.end()));
+    EXPECT_TRUE(std::includes(serial.begin(), serial.end(), kept.begin(), kept.end()));
+    EXPECT_LT(kept.size(), serial.size());
+    const bool from_both = !kept.empty() && kept.front().frame < 100 && kept.back().frame >= 100;
+    EXPECT_TRUE(from_both) << kept.size() << " pairs kept";
 }
 
 }  // namespace
