@@ -15,6 +15,8 @@
 #include "collidescope/pipeline.hpp"
 #include "collidescope/scene.hpp"
 
+#include <chrono>
+#include <cstdio>
 #include <initializer_list>
 #include <memory>
 #include <optional>
@@ -58,15 +60,40 @@ std::string scene_line(const Scene& scene, const FrameRange& range, const Pipeli
     return line;
 }
 
+// Where an output's data is: under mpirun the run's output (rank 0 assembles it there from every
+// rank's file, ranks.hpp), not this rank's temporary file.
+std::string location(const OutputStream& output, const std::string& target) {
+    if (!ranks::parallel()) return output.location();
+    return target == "-" ? "stdout" : OutputStream::partial_name(target);
+}
+
+// The total line: serially this run's; under mpirun rank 0 prints one for the run when every
+// rank is done, the sums of the ranks' totals in the form of a serial run's line, then the
+// number of ranks and the wall time since rank 0's `start`.
+void log_total_line(Progress& progress, const SummaryPrinter& summary, std::chrono::steady_clock::time_point start) {
+    if (!ranks::parallel()) {
+        progress.log(summary.total_line());
+        return;
+    }
+    std::vector<double> totals = summary.totals();
+    totals.push_back(1);  // summed: the number of ranks
+    ranks::summary_line(std::move(totals), [start](const std::vector<double>& sums) {
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        char tail[96];
+        std::snprintf(tail, sizeof tail, "; %.0f ranks, %.3f s wall time", sums.back(), wall);
+        return SummaryPrinter::total_line(sums) + tail;
+    });
+}
+
 // "interrupted by SIGINT after 12 of 60 frames (frames 0..11); partial outputs: pairs.tsv.partial".
 std::string interrupted_line(int signal, const FrameRange& range, std::uint32_t end,
-                             std::initializer_list<const OutputStream*> outputs) {
+                             std::initializer_list<std::string> outputs) {
     std::string line = "interrupted by " + signal_name(signal) + " after " + std::to_string(end - range.begin) + " of " +
                        std::to_string(range.end - range.begin) + " frames (frames " + std::to_string(range.begin) +
                        ".." + std::to_string(end - 1) + ")";
     std::string files;
-    for (const OutputStream* output : outputs) {
-        if (output != nullptr) files += (files.empty() ? "" : ", ") + output->location();
+    for (const std::string& output : outputs) {
+        if (!output.empty()) files += (files.empty() ? "" : ", ") + output;
     }
     if (!files.empty()) line += "; partial output: " + files;
     return line;
@@ -76,6 +103,7 @@ int run_check(const CheckOptions& options) {
     if (options.pairs == "-" && options.stats == "-") {
         throw InputError("--pairs and --stats cannot both write to stdout (-)");
     }
+    const auto start = std::chrono::steady_clock::now();
     const Scene scene = open_scene(options.inputs, options.scene, options.engine.animation);
     // Under mpirun: this rank's block, and outputs of its own that rank 0 assembles (ranks.hpp).
     const FrameRange range = ranks::block(parse_frame_range(options.frames, scene.source->frame_count()));
@@ -115,14 +143,15 @@ int run_check(const CheckOptions& options) {
     if (interrupt.signal() != 0) {
         if (pairs_out) pairs_out->finish_partial();
         if (stats_out) stats_out->finish_partial();
-        progress.log(summary.total_line());
-        progress.log(interrupted_line(interrupt.signal(), range, f, {pairs_out ? &*pairs_out : nullptr,
-                                                                    stats_out ? &*stats_out : nullptr}));
+        log_total_line(progress, summary, start);
+        progress.log(interrupted_line(interrupt.signal(), range, f,
+                                      {pairs_out ? location(*pairs_out, options.pairs) : std::string(),
+                                       stats_out ? location(*stats_out, options.stats) : std::string()}));
         return interrupted_exit_code(interrupt.signal());
     }
     if (pairs_out) pairs_out->finish();
     if (stats_out) stats_out->finish();
-    progress.log(summary.total_line());
+    log_total_line(progress, summary, start);
     return summary.colliding_pairs() > 0 && !options.exit_zero ? 1 : 0;
 }
 

@@ -56,15 +56,20 @@ void SummaryPrinter::on_frame(const FrameReport& report) {
                    " colliding pairs, " + format_ms(report.stats.ms.total) + " ms");
 }
 
-std::string SummaryPrinter::total_line() const {
-    const std::string modes =
-        m_mode_frames[1] + m_mode_frames[2] == 0
-            ? std::string()
-            : " (mode 1: " + std::to_string(m_mode_frames[1]) + " frames, mode 2: " + std::to_string(m_mode_frames[2]) +
-                  " frames, " + std::to_string(m_switches) + " switches)";
-    return "total: " + std::to_string(m_frames) + " frames, " + std::to_string(m_frames_colliding) +
-           " with collisions, " + std::to_string(m_colliding_pairs) + " colliding pairs" + modes + ", " +
-           format_ms(m_total_ms) + " ms";
+std::vector<double> SummaryPrinter::totals() const {
+    return {double(m_frames),         double(m_frames_colliding), double(m_colliding_pairs), double(m_mode_frames[1]),
+            double(m_mode_frames[2]), double(m_switches),         m_total_ms};
+}
+
+std::string SummaryPrinter::total_line() const { return total_line(totals()); }
+
+std::string SummaryPrinter::total_line(const std::vector<double>& totals) {
+    const auto count = [&](std::size_t k) { return std::to_string(static_cast<std::uint64_t>(totals[k])); };
+    const std::string modes = totals[3] + totals[4] == 0 ? std::string()
+                                                         : " (mode 1: " + count(3) + " frames, mode 2: " + count(4) +
+                                                               " frames, " + count(5) + " switches)";
+    return "total: " + count(0) + " frames, " + count(1) + " with collisions, " + count(2) + " colliding pairs" + modes +
+           ", " + format_ms(totals[6]) + " ms";
 }
 
 }  // namespace collidescope::app

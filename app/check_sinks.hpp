@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace collidescope::app {
 
@@ -46,6 +47,11 @@ public:
     /// method adds " (mode 1: 58 frames, mode 2: 2 frames, 2 switches)" before the time.
     std::string total_line() const;
     std::uint64_t colliding_pairs() const { return m_colliding_pairs; }
+    /// The counts and the time behind total_line(), as numbers that add up over runs of
+    /// disjoint frames (the ranks of an MPI run: ranks::summary_line).
+    std::vector<double> totals() const;
+    /// total_line() of `totals` (the sums of several runs' totals()).
+    static std::string total_line(const std::vector<double>& totals);
 
 private:
     Progress& m_progress;

@@ -11,6 +11,7 @@ namespace {
 
 // Written by the handler only; sig_atomic_t is what a handler may store to.
 volatile std::sig_atomic_t g_signal = 0;
+int g_guards = 0;  ///< guards alive (main thread only)
 
 void on_signal(int signal) { g_signal = signal; }
 
@@ -20,7 +21,9 @@ struct sigaction g_previous[2];
 }  // namespace
 
 InterruptGuard::InterruptGuard() {
-    g_signal = 0;
+    // A guard inside another keeps what the outer one caught (a signal that came before the
+    // inner one was made still stops the frame loop).
+    if (g_guards++ == 0) g_signal = 0;
     struct sigaction action {};
     action.sa_handler = on_signal;
     sigemptyset(&action.sa_mask);
@@ -31,6 +34,7 @@ InterruptGuard::InterruptGuard() {
 }
 
 InterruptGuard::~InterruptGuard() {
+    --g_guards;
     for (int k = 0; k < 2; ++k) sigaction(k_signals[k], &g_previous[k], nullptr);
 }
 

@@ -8,8 +8,9 @@
 
 namespace collidescope::app {
 
-/// Catches SIGINT and SIGTERM while alive (one instance at a time); restores the previous
-/// handlers when destroyed.
+/// Catches SIGINT and SIGTERM while alive; restores the previous handlers when destroyed.
+/// Guards nest (made and destroyed in reverse order, on the main thread): an inner guard sees a
+/// signal the outer one caught before it was made.
 class InterruptGuard {
 public:
     InterruptGuard();

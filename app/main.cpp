@@ -62,8 +62,8 @@ int run(int argc, char** argv) {
         for (const collidescope::app::Command& command : commands) {
             if (!command.parser->parsed()) continue;
             const std::string name = command.parser->get_name();
-            if (collidescope::app::ranks::parallel() && name != "check" && name != "record") {
-                return print_error(name + " does not run frame-parallel: run it without mpirun (check and record do)");
+            if (collidescope::app::ranks::parallel() && name != "check" && name != "record" && name != "replay") {
+                return print_error(name + " does not run frame-parallel: run it without mpirun (check, record and replay do)");
             }
             return command.run();
         }

@@ -1,5 +1,5 @@
 #pragma once
-// Frame-parallel runs under MPI: `mpirun -np N collidescope check|record ...` with the same
+// Frame-parallel runs under MPI: `mpirun -np N collidescope check|record|replay ...` with the same
 // arguments as a serial run (docs/mpi.md). Each rank takes one contiguous block of the frames
 // (cold: its trees are built at its first frame, the adaptive policy starts from its priors),
 // writes its outputs to files of its own, and rank 0 assembles them, in frame order, into the
@@ -11,7 +11,9 @@
 #include "frame_range.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <string>
+#include <vector>
 
 namespace collidescope::app::ranks {
 
@@ -42,6 +44,22 @@ public:
 
 /// True under mpirun with more than one rank.
 bool parallel();
+/// True serially and on rank 0: the process that prints the run's own lines (totals, notes)
+/// and shows a progress bar.
+bool leader();
+/// A last step of the run on rank 0 (rank 0's `step` is kept, the others' ignored), run when
+/// every rank finished its command without error or signal (exit 0 or 1) and its outputs were
+/// assembled: e.g. encoding a clip from every rank's frames. It prints its own lines; its exit
+/// code becomes the run's when larger, and an exception it throws becomes one error line and
+/// exit 2. Serially it does nothing (the command does the work itself).
+void when_done(std::function<int()> step);
+/// A line the run prints once, from the sums over the ranks of `values`: under MPI rank 0
+/// prints `line(sums)` on stderr (stdout: `on_stdout`) when every rank is done (only when every rank registered as
+/// many values: a rank that failed did not), so a run prints one line where each rank would
+/// print its own; serially it does nothing (the command prints its line itself). `line` runs
+/// on rank 0 only, after every rank finished its command.
+void summary_line(std::vector<double> values, std::function<std::string(const std::vector<double>& sums)> line,
+                  bool on_stdout = false);
 /// This rank's block of `range` (remembered for error lines); `range` serially.
 FrameRange block(FrameRange range);
 /// Where this rank writes a text output (--pairs, --stats) that the run delivers at `target`

@@ -6,6 +6,7 @@
 #include "interrupt.hpp"
 #include "named_cli_option.hpp"
 #include "progress.hpp"
+#include "ranks.hpp"
 
 #include "collidescope/error.hpp"
 #include "collidescope/replays/replay.hpp"
@@ -51,6 +52,10 @@ recording lacks is said on the image and on stderr. Same recording and options: 
 only one of them found in green. --video FILE.mp4|FILE.gif encodes the frames as one clip
 (H.264 MP4 or animated GIF, through FFmpeg's libraries), with or without -o DIR; a failed
 clip leaves no file. See docs/replay.md.
+SIGINT or SIGTERM stops after the frames being rendered: every PNG written is complete.
+Under mpirun (docs/mpi.md) each rank renders one block of the frames into DIR, the same files
+a serial replay writes; with --video (which then needs -o DIR) rank 0 encodes the clip from
+them at the end; --diff runs serially only.
 Exit codes: 0 written (--diff: same pairs), 1 (--diff only) the pairs differ, 2 error, 130 or
 143 stopped by SIGINT or SIGTERM (with --video: the clip is not written).)";
 
@@ -94,6 +99,51 @@ replays::ReplayOptions replay_options(const ReplayCliOptions& cli) {
     return options;
 }
 
+// Under mpirun: this rank's block of the replayed frames (scene frame numbers), rendered with
+// the camera, timeline and contact sheet choice of the whole replay; the sheet is rank 0's, and
+// so is the clip, encoded from every rank's PNGs at the end (replay_in_parallel_end). Returns
+// the scene frame numbers of the replayed frames.
+std::vector<std::uint32_t> take_block(const std::string& recording, replays::ReplayOptions& options) {
+    const std::vector<std::uint32_t> frames = replays::replayed_frames(recording, options);
+    const FrameRange block = ranks::block({frames.front(), frames.back() + 1});
+    options.part_begin = block.begin;
+    options.part_end = block.end;
+    options.video.clear();
+    if (!ranks::leader()) options.contact_sheet.clear();
+    return frames;
+}
+
+std::string png_name(std::uint32_t frame) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04u.png", frame);
+    return name;
+}
+
+// Under mpirun, once every rank is done, rank 0 prints the serial run's `wrote` line and
+// encodes the clip (--video) from the PNGs every rank wrote, in frame order.
+void replay_in_parallel_end(const ReplayCliOptions& cli, const replays::ReplayOptions& options,
+                            const std::vector<std::uint32_t>& frames, std::uint64_t written) {
+    const std::string output = cli.output;
+    const std::string first = png_name(frames.front()), last = png_name(frames.back());
+    ranks::summary_line({double(written)}, [output, first, last](const std::vector<double>& sums) {
+        return "wrote " + std::to_string(static_cast<std::uint64_t>(sums[0])) + " frames to " + output + " (" + first +
+               " .. " + last + ")";
+    }, true);
+    if (cli.video.empty()) return;
+    replays::ReplayOptions whole = options;
+    whole.video = cli.video;
+    const std::string recording = cli.recordings[0];
+    ranks::when_done([recording, whole, frames] {
+        std::vector<std::filesystem::path> pngs;
+        for (const std::uint32_t frame : frames) pngs.push_back(whole.output_dir / png_name(frame));
+        const replays::ReplaySummary clip = replays::encode_pngs_as_video(recording, pngs, whole);
+        std::printf("video: %s (%llu frames at %g fps, %.2f s of encoding)\n", clip.video.c_str(),
+                    static_cast<unsigned long long>(clip.frames), clip.video_fps, clip.video_seconds);
+        std::fflush(stdout);
+        return 0;
+    });
+}
+
 std::string rate_line(const replays::ReplaySummary& summary, const replays::ReplayOptions& options) {
     char line[256];
     std::snprintf(line, sizeof line, "rendered %llu frames of %llu triangles at %dx%d in %.2f s (%.1f frames/s, %d threads, %s)",
@@ -120,7 +170,13 @@ int run_replay(const ReplayCliOptions& cli) {
         throw InputError(cli.diff ? "replay --diff needs -o DIR" : "replay needs -o DIR (PNG frames), --video FILE, or both");
     }
     if (cli.diff && !cli.video.empty()) throw InputError("--video does not go with --diff (use -o DIR)");
-    const replays::ReplayOptions options = replay_options(cli);
+    if (ranks::parallel() && cli.diff) throw InputError("--diff does not run frame-parallel: run it without mpirun");
+    if (ranks::parallel() && cli.output.empty()) {
+        throw InputError("under mpirun, --video needs -o DIR: the ranks write the frames there, rank 0 encodes them");
+    }
+    replays::ReplayOptions options = replay_options(cli);
+    std::vector<std::uint32_t> replayed;
+    if (ranks::parallel()) replayed = take_block(cli.recordings[0], options);
     // Every frame allocates a few image-sized buffers (3.7 MB at 1280x720: read back, PNG
     // filter rows, deflate output). Above glibc's mmap threshold each is mapped and unmapped
     // again, with page faults on every frame (measured: 8-10% of a frame at 1280x720); keep
@@ -128,18 +184,38 @@ int run_replay(const ReplayCliOptions& cli) {
     mallopt(M_MMAP_THRESHOLD, 256 << 20);
     mallopt(M_TRIM_THRESHOLD, 512 << 20);
     std::unique_ptr<Progress> bar;  // made at the first frame, when the number of frames is known
-    // With --video, SIGINT or SIGTERM stops the replay between frames; unwinding removes the
-    // unfinished clip (the PNGs written so far stay, each complete).
+    // SIGINT or SIGTERM (mpirun's Ctrl-C) stops the replay between frames: the PNGs written so
+    // far stay, each complete; with --video, unwinding removes the unfinished clip.
     struct Interrupted {};
-    std::optional<InterruptGuard> interrupt;
-    if (!cli.video.empty()) interrupt.emplace();
+    const InterruptGuard interrupt;
+    std::uint64_t done = 0;
+    std::uint64_t expected = 0;
     auto frame_done = [&](std::uint64_t total) {
-        if (!bar) bar = std::make_unique<Progress>(total);
-        bar->advance();
-        if (interrupt && interrupt->signal() != 0) throw Interrupted{};
+        // Under mpirun only rank 0 shows a bar (of its own block), so the ranks' bars do not garble.
+        if (!bar && ranks::leader()) bar = std::make_unique<Progress>(total);
+        if (bar) bar->advance();
+        ++done;
+        expected = total;
+        if (interrupt.signal() != 0 && done < total) throw Interrupted{};
+    };
+    auto stopped = [&] {
+        if (bar) bar->finish();
+        const int signal = interrupt.signal();
+        // "replay: interrupted by SIGINT[; clip.mp4 not written]; 12 of 60 frames rendered[, every PNG in DIR complete]"
+        std::string line = "replay: interrupted by " + signal_name(signal);
+        if (!cli.video.empty()) line += "; " + cli.video + " not written";
+        line += "; " + std::to_string(done) + " of " + std::to_string(expected) + " frames rendered";
+        if (!cli.output.empty()) line += ", every PNG in " + cli.output + " complete";
+        std::fprintf(stderr, "%s\n", line.c_str());
+        return interrupted_exit_code(signal);
     };
     if (cli.diff) {
-        const replays::ReplaySummary summary = replays::replay_diff(cli.recordings[0], cli.recordings[1], options, frame_done);
+        replays::ReplaySummary summary;
+        try {
+            summary = replays::replay_diff(cli.recordings[0], cli.recordings[1], options, frame_done);
+        } catch (const Interrupted&) {
+            return stopped();
+        }
         if (bar) bar->finish();
         std::printf("wrote %llu side-by-side frames to %s (diff_NNNN.png): %llu pairs only in %s, %llu only in %s\n",
                     static_cast<unsigned long long>(summary.frames), cli.output.c_str(),
@@ -152,15 +228,16 @@ int run_replay(const ReplayCliOptions& cli) {
     try {
         summary = replays::replay(cli.recordings[0], options, frame_done);
     } catch (const Interrupted&) {
-        if (bar) bar->finish();
-        const int signal = interrupt->signal();
-        std::fprintf(stderr, "replay: interrupted by %s; %s not written\n", signal_name(signal).c_str(), cli.video.c_str());
-        return interrupted_exit_code(signal);
+        return stopped();
     }
     if (bar) bar->finish();
-    for (const std::string& note : summary.notes) std::fprintf(stderr, "replay: note: %s\n", note.c_str());
+    if (ranks::leader()) {
+        for (const std::string& note : summary.notes) std::fprintf(stderr, "replay: note: %s\n", note.c_str());
+    }
     if (!cli.quiet) std::fprintf(stderr, "%s\n", rate_line(summary, options).c_str());
-    if (!summary.files.empty()) {
+    if (ranks::parallel()) {
+        replay_in_parallel_end(cli, options, replayed, summary.frames);
+    } else if (!summary.files.empty()) {
         std::printf("wrote %llu frames to %s (%s .. %s)\n", static_cast<unsigned long long>(summary.frames),
                     cli.output.c_str(), summary.files.front().filename().c_str(), summary.files.back().filename().c_str());
     }

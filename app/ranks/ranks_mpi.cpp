@@ -3,6 +3,7 @@
 
 #include "ranks.hpp"
 
+#include "interrupt.hpp"
 #include "output_stream.hpp"
 
 #include "collidescope/error.hpp"
@@ -17,6 +18,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <vector>
@@ -39,6 +41,14 @@ struct State {
     std::int64_t frame = -1;  ///< the frame being read or processed, -1 before the first
     std::vector<TextOutput> texts;
     std::vector<std::pair<std::string, RecordingJoin>> recordings;  ///< targets; parts are recording_part(target, join, r)
+    /// Under MPI, SIGINT and SIGTERM are caught for the whole run: mpirun passes Ctrl-C on to
+    /// every rank as SIGTERM, and a rank that finished its block and waits for the others (or
+    /// assembles the outputs) must not die of it, or mpirun kills the ranks still stopping.
+    std::optional<InterruptGuard> interrupt;
+    std::vector<double> summary_values;   ///< summed over the ranks for summary_line
+    std::function<std::string(const std::vector<double>&)> summary_line;
+    bool summary_on_stdout = false;
+    std::function<int()> last_step;  ///< rank 0's when_done
 };
 
 State g_state;
@@ -144,6 +154,47 @@ int combine(const std::vector<int>& codes) {
 
 void print_line(const std::string& line) { std::cerr << "collidescope: " << line << std::endl; }
 
+// Rank 0 prints the summary line of the sums, when every rank registered as many values.
+void print_summary() {
+    const int count = static_cast<int>(g_state.summary_values.size());
+    int fewest = 0, most = 0;
+    MPI_Allreduce(&count, &fewest, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+    MPI_Allreduce(&count, &most, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    if (fewest != most || count == 0) return;
+    std::vector<double> sums(g_state.summary_values.size());
+    MPI_Reduce(g_state.summary_values.data(), sums.data(), count, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
+    if (g_state.rank != 0 || !g_state.summary_line) return;
+    std::ostream& out = g_state.summary_on_stdout ? std::cout : std::cerr;
+    out << g_state.summary_line(sums) + '\n' << std::flush;
+}
+
+// Rank 0: the command's last step (when_done), its code if larger than `code`.
+int run_last_step(int code) {
+    try {
+        return std::max(code, g_state.last_step());
+    } catch (const std::exception& error) {
+        print_line("error: " + std::string(error.what()));
+        return 2;
+    }
+}
+
+// Rank 0, when ranks were stopped by SIGINT or SIGTERM (mpirun passes Ctrl-C on as SIGTERM):
+// one line saying which, after their own lines.
+void print_interrupted(const std::vector<int>& codes) {
+    std::string stopped;
+    int signal = 0;
+    for (int r = 0; r < g_state.size; ++r) {
+        const int code = codes[static_cast<std::size_t>(r)];
+        if (code != 130 && code != 143) continue;
+        stopped += (stopped.empty() ? "" : ", ") + std::to_string(r);
+        signal = code - 128;
+    }
+    if (stopped.empty()) return;
+    print_line("interrupted: rank(s) " + stopped + " of " + std::to_string(g_state.size) + " stopped by " +
+               signal_name(signal) + " after their current frame (mpirun passes Ctrl-C on to the ranks as SIGTERM); "
+               "every finished frame is kept");
+}
+
 // Rank 0: joins the parts into the target (a copying join then removes them), or says where
 // they are.
 int assemble_recording(const std::string& target, RecordingJoin join, const std::vector<int>& codes, int code) {
@@ -191,9 +242,11 @@ Session::Session(int& argc, char**& argv) {
     MPI_Bcast(&pid, 1, MPI_LONG, 0, MPI_COMM_WORLD);
     g_state.job = pid;
     g_state.active = g_state.size > 1;
+    if (g_state.active) g_state.interrupt.emplace();
 }
 
 Session::~Session() {
+    g_state.interrupt.reset();
     int initialized = 0, finalized = 0;
     MPI_Initialized(&initialized);
     MPI_Finalized(&finalized);
@@ -226,6 +279,10 @@ int Session::finish(int code) {
             }
         }
     }
+    print_summary();
+    if (g_state.rank == 0) print_interrupted(codes);
+    if (g_state.rank == 0 && complete && combined < 2 && g_state.last_step) combined = run_last_step(combined);
+
     if (g_state.rank == 0) {
         for (const auto& [target, join] : g_state.recordings) combined = assemble_recording(target, join, codes, combined);
     }
@@ -236,6 +293,19 @@ int Session::finish(int code) {
 }
 
 bool parallel() { return g_state.active; }
+
+bool leader() { return g_state.rank == 0; }
+
+void when_done(std::function<int()> step) {
+    if (g_state.active && g_state.rank == 0) g_state.last_step = std::move(step);
+}
+
+void summary_line(std::vector<double> values, std::function<std::string(const std::vector<double>&)> line, bool on_stdout) {
+    if (!g_state.active) return;
+    g_state.summary_on_stdout = on_stdout;
+    g_state.summary_values = std::move(values);
+    g_state.summary_line = std::move(line);
+}
 
 FrameRange block(FrameRange range) {
     if (!g_state.active) return range;

@@ -8,6 +8,9 @@ Session::Session(int&, char**&) {}
 Session::~Session() = default;
 int Session::finish(int code) { return code; }
 bool parallel() { return false; }
+bool leader() { return true; }
+void when_done(std::function<int()>) {}
+void summary_line(std::vector<double>, std::function<std::string(const std::vector<double>&)>, bool) {}
 FrameRange block(FrameRange range) { return range; }
 std::string text_output(const std::string& target) { return target; }
 std::string recording_output(const std::string& target, RecordingJoin) { return target; }

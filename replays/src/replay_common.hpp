@@ -18,6 +18,9 @@ void prepare_output_dir(const std::filesystem::path& dir);
 std::vector<std::uint64_t> replay_rows(const RecordingData& data, const ReplayOptions& options);
 /// `camera` with its up axis resolved: --up when given, else the recording's `up_axis`, else z.
 CameraSpec resolved_camera(const CameraSpec& camera, const RecordingData& data);
+/// The clip's frame rate: the recording's `fps`; else, when it has frame times (a point cache
+/// with times but no rate), one over the median step between them; else 30.
+double clip_fps(const recorder::Recording& recording);
 /// The session's annotations; points into `data`.
 SessionView session_view(const RecordingData& data);
 

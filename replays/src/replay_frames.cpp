@@ -42,19 +42,6 @@ std::filesystem::path frame_file(const std::filesystem::path& dir, const char* p
     return dir / name;
 }
 
-// The clip's frame rate: the recording's `fps`; else, when it has frame times (a point cache
-// with times but no rate), one over the median step between them; else 30.
-double clip_fps(const recorder::Recording& recording) {
-    if (recording.fps() > 0) return recording.fps();
-    const std::vector<double> times = recording.frame_times();
-    std::vector<double> steps;
-    for (std::size_t k = 1; k < times.size(); ++k) {
-        if (times[k] > times[k - 1]) steps.push_back(times[k] - times[k - 1]);
-    }
-    if (steps.empty()) return 30.0;
-    std::nth_element(steps.begin(), steps.begin() + std::ptrdiff_t(steps.size() / 2), steps.end());
-    return std::clamp(1.0 / steps[steps.size() / 2], 1.0, 1000.0);
-}
 
 // The clip, opened before any frame is rendered (a bad path fails at once), at clip_fps.
 std::unique_ptr<OrderedVideo> open_ordered_video(const RecordingData& data, const ReplayOptions& options,
@@ -83,7 +70,49 @@ std::vector<Framing> focus_of(const CameraSpec& camera, RecordingData& data, con
     return focus_path(colliding, bounds);
 }
 
+bool whole_replay(const ReplayOptions& options) { return options.part_begin == 0 && options.part_end == UINT32_MAX; }
+
+// The ordinals (positions among the replayed `rows`) this process renders: those in the
+// options' part, then the contact sheet's `picked` frames outside it (rendered for the sheet
+// alone). `in_part[i]`: ordinal i is in the part (its PNG is written).
+std::vector<std::uint64_t> render_jobs(const RecordingData& data, const std::vector<std::uint64_t>& rows,
+                                       const ReplayOptions& options, const std::vector<std::uint64_t>& picked,
+                                       std::vector<bool>& in_part) {
+    in_part.assign(rows.size(), false);
+    std::vector<std::uint64_t> jobs;
+    for (std::uint64_t i = 0; i < rows.size(); ++i) {
+        const std::uint32_t frame = data.indices()[rows[i]];
+        in_part[i] = frame >= options.part_begin && frame < options.part_end;
+        if (in_part[i]) jobs.push_back(i);
+    }
+    for (const std::uint64_t i : picked) {
+        if (!in_part[i]) jobs.push_back(i);
+    }
+    return jobs;
+}
+
 }  // namespace
+
+// The clip's frame rate (replay_common.hpp): the recording's `fps`; else, when it has frame times (a point cache
+// with times but no rate), one over the median step between them; else 30.
+double clip_fps(const recorder::Recording& recording) {
+    if (recording.fps() > 0) return recording.fps();
+    const std::vector<double> times = recording.frame_times();
+    std::vector<double> steps;
+    for (std::size_t k = 1; k < times.size(); ++k) {
+        if (times[k] > times[k - 1]) steps.push_back(times[k] - times[k - 1]);
+    }
+    if (steps.empty()) return 30.0;
+    std::nth_element(steps.begin(), steps.begin() + std::ptrdiff_t(steps.size() / 2), steps.end());
+    return std::clamp(1.0 / steps[steps.size() / 2], 1.0, 1000.0);
+}
+
+std::vector<std::uint32_t> replayed_frames(const std::filesystem::path& recording, const ReplayOptions& options) {
+    const RecordingData data(recording);
+    std::vector<std::uint32_t> frames;
+    for (const std::uint64_t row : replay_rows(data, options)) frames.push_back(data.indices()[row]);
+    return frames;
+}
 
 CameraSpec resolved_camera(const CameraSpec& camera, const RecordingData& data) {
     CameraSpec resolved = camera;
@@ -128,6 +157,9 @@ SessionView session_view(const RecordingData& data) {
 }
 
 ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions& options, const FrameDone& frame_done) {
+    if (!options.video.empty() && !whole_replay(options)) {
+        throw InputError(options.video.string() + ": a clip needs every replayed frame in one process, not a part");
+    }
     RecordingData data(recording);
     const std::vector<std::uint64_t> rows = replay_rows(data, options);
     const bool pngs = !options.output_dir.empty();
@@ -150,12 +182,15 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
     const std::vector<std::uint64_t> picked =
         sheet ? select_sheet_frames(options.sheet_selection, options.sheet_count, totals, pairs) : std::vector<std::uint64_t>{};
     const std::set<std::uint64_t> on_sheet(picked.begin(), picked.end());
+    std::vector<bool> in_part;
+    const std::vector<std::uint64_t> jobs = render_jobs(data, rows, options, picked, in_part);
+    const auto own_frames = static_cast<std::uint64_t>(std::count(in_part.begin(), in_part.end(), true));
     // The sheet shows each frame's meshes (the scene's part of the image); its captions and
     // header carry the rest.
     const TileSize tile = sheet_tile_size(layout.scene.w, layout.scene.h);
     std::map<std::uint64_t, SheetTile> tiles;
 
-    if (pngs) summary.files.resize(rows.size());
+    std::vector<std::filesystem::path> files(rows.size());
     std::mutex reader_lock;
     std::mutex done_lock;
     bool any_depth = false;
@@ -163,8 +198,9 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
     bool any_decision = false;
     std::uint64_t dropped = 0;
     const auto start = std::chrono::steady_clock::now();
-    summary.renderer = run_parallel(options.gl, options.threads, rows.size(), options.width, options.height,
-                                    [&](RenderThread& thread, std::uint64_t i) {
+    summary.renderer = run_parallel(options.gl, options.threads, jobs.size(), options.width, options.height,
+                                    [&](RenderThread& thread, std::uint64_t job) {
+        const std::uint64_t i = jobs[job];
         StepClock clock;
         FrameData frame;
         {
@@ -181,7 +217,7 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
         std::vector<std::uint8_t> rgba = thread.renderer->read_rgba();
         const double readback = clock.lap();
         std::filesystem::path file;
-        if (pngs) {
+        if (pngs && in_part[i]) {
             file = frame_file(options.output_dir, "frame", frame.frame);
             write_png(file, rgba, options.width, options.height);
         }
@@ -196,28 +232,34 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
         }
         if (video) video->add(i, std::move(rgba));
         const std::lock_guard<std::mutex> guard(done_lock);
-        if (pngs) summary.files[i] = file;
+        if (on_sheet.count(i) != 0) tiles[i] = std::move(sheet_tile);
+        if (!in_part[i]) return;  // rendered for the contact sheet alone
+        files[i] = file;
         summary.read_seconds += read;
         summary.draw_seconds += draw;
         summary.readback_seconds += readback;
         summary.png_seconds += png;
-        if (i == 0) {
+        if (job == 0) {
             for (const ObjectFrame& object : frame.objects) summary.triangles += object.triangles->size();
         }
         any_depth = any_depth || !frame.depth_images.empty();
         any_pcs = any_pcs || frame.pcs_recorded;
         any_decision = any_decision || !frame.decision.empty();
         dropped += frame.positions_dropped ? 1 : 0;
-        if (on_sheet.count(i) != 0) tiles[i] = std::move(sheet_tile);
         ++summary.frames;
-        if (frame_done) frame_done(rows.size());
+        if (frame_done) frame_done(own_frames);
     });
+    if (pngs) {
+        for (const std::filesystem::path& file : files) {
+            if (!file.empty()) summary.files.push_back(file);
+        }
+    }
     if (video) {
         video->finish(rows.size());
         summary.video_seconds = video->seconds();
     }
     summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    summary.threads = render_threads(options.threads, rows.size());
+    summary.threads = render_threads(options.threads, jobs.size());
     if ((options.layers & k_layer_depth) != 0 && !any_depth) {
         summary.notes.push_back("no depth buffers in this recording (record --method gpu --depth every:N): no thumbnails");
     }
@@ -229,7 +271,7 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
         summary.notes.push_back("no decisions in this recording (record --method adaptive): the panel says not recorded");
     }
     if (dropped > 0) {
-        summary.notes.push_back("the vertex positions of " + std::to_string(dropped) + " of " + std::to_string(rows.size()) +
+        summary.notes.push_back("the vertex positions of " + std::to_string(dropped) + " of " + std::to_string(own_frames) +
                                 " frames were not recorded (record --budget): those frames show no meshes");
     }
     if (sheet) {

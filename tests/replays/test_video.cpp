@@ -16,6 +16,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <regex>
 
 namespace collidescope {
 namespace {
@@ -193,6 +194,32 @@ TEST(VideoInterrupt, SigintStopsBetweenFramesAndRemovesTheUnfinishedClip) {
     EXPECT_NE(result.err.find("interrupted by SIGINT; clip.mp4 not written"), std::string::npos) << result.err;
     EXPECT_FALSE(std::filesystem::exists(out / "clip.mp4"));
     EXPECT_EQ(partial_files(out), 0u);
+    if (!HasFailure()) std::filesystem::remove_all(out);
+}
+
+// Without --video too (mpirun's Ctrl-C reaches the ranks as SIGTERM, docs/mpi.md): the replay
+// stops between frames, every PNG written is whole, and it says how many it rendered.
+TEST(ReplayInterrupt, SigtermStopsBetweenFramesAndEveryPngIsComplete) {
+    const std::filesystem::path out = testing::test_dir("replay_sigterm_" + std::to_string(::getpid()));
+    testing::record("demo", "aabb", out / "run.h5");
+    testing::CliProcess replay({"replay", "run.h5", "-o", "frames", "--size", "1920x1080", "--threads", "1"}, out);
+    ASSERT_TRUE(replay.wait_until([&] { return std::filesystem::exists(out / "frames" / "frame_0002.png"); }, 60))
+        << replay.err();
+    replay.send(SIGTERM);
+    const testing::CliResult result = replay.wait();
+    EXPECT_EQ(result.exit_code, 143) << result.err;
+    std::smatch match;
+    const std::regex line("replay: interrupted by SIGTERM; ([0-9]+) of 60 frames rendered, every PNG in frames complete\n");
+    ASSERT_TRUE(std::regex_search(result.err, match, line)) << result.err;
+    std::size_t pngs = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(out / "frames")) {
+        const std::string bytes = testing::read_text(entry.path());
+        const std::string iend = std::string("IEND\xae\x42\x60\x82", 8);
+        EXPECT_TRUE(bytes.size() > 8 && bytes.compare(bytes.size() - 8, 8, iend) == 0) << entry.path();
+        ++pngs;
+    }
+    EXPECT_EQ(pngs, std::stoul(match[1]));
+    EXPECT_LT(pngs, 60u);
     if (!HasFailure()) std::filesystem::remove_all(out);
 }
 

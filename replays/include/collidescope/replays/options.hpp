@@ -78,6 +78,15 @@ struct ReplayOptions {
     /// outside are skipped. The default is every recorded frame.
     std::uint32_t frame_begin = 0;
     std::uint32_t frame_end = UINT32_MAX;
+    /// Frame-parallel replays (one process renders one block, app/ranks.hpp): render only the
+    /// replayed frames whose scene frame number lies in [part_begin, part_end), with everything
+    /// that depends on all of them (the camera's bounds and orbit angle, the focus path, the
+    /// frame's position on the timeline, the contact sheet's choice of frames) computed over the
+    /// whole [frame_begin, frame_end), so each PNG is byte for byte a whole replay's. The
+    /// contact sheet's frames outside the part are rendered for it alone (no PNG). The clip
+    /// needs every frame: a part with `video` is an error. The default is the whole replay.
+    std::uint32_t part_begin = 0;
+    std::uint32_t part_end = UINT32_MAX;
     int width = 1280;   ///< pixels
     int height = 720;   ///< pixels
     CameraSpec camera;

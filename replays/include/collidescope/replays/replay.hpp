@@ -47,6 +47,18 @@ struct ReplaySummary {
 /// InputError naming the file and the formats known. Touches no file.
 void check_video_path(const std::filesystem::path& path);
 
+/// The scene frame numbers of the frames replay() would render for `options` (its frame
+/// range, not its part), in order. Throws as replay() when there is none.
+std::vector<std::uint32_t> replayed_frames(const std::filesystem::path& recording, const ReplayOptions& options);
+
+/// The clip `options.video` of PNGs a replay wrote (`pngs`, in frame order, options.width x
+/// options.height; e.g. the parts of a frame-parallel replay put together), at the recording's
+/// frame rate: the clip replay() would have encoded from the same frames. Sets the summary's
+/// video fields. Throws InputError naming a PNG that is missing, unreadable or of another size
+/// (no clip is left), or as replay().
+ReplaySummary encode_pngs_as_video(const std::filesystem::path& recording, const std::vector<std::filesystem::path>& pngs,
+                                   const ReplayOptions& options);
+
 /// Replays `recording` into `options.output_dir`/frame_NNNN.png (NNNN = the scene frame number)
 /// and/or the clip `options.video`. Throws InputError naming the file (unreadable or corrupt
 /// recording, no frame in range, unwritable output; a failed clip leaves no file) or

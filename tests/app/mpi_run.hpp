@@ -1,0 +1,79 @@
+#pragma once
+// Running the built collidescope under mpirun from a test (test_mpi_replay.cpp): Open MPI
+// refuses to run as root (CI does) unless told, and the ranks run without leak detection in
+// the AddressSanitizer build (test_mpi_ranks.cpp says why). Under CI=true a build without Open
+// MPI, or no mpirun, fails the tests instead of skipping them.
+
+#include "support/cli_runner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace collidescope::testing_mpi {
+
+inline bool under_ci() {
+    const char* ci = std::getenv("CI");
+    return ci != nullptr && std::string(ci) == "true";
+}
+
+/// Why MPI runs cannot be tested here, or "".
+inline std::string mpi_missing() {
+#if !COLLIDESCOPE_MPI
+    return "collidescope was built without Open MPI (libopenmpi-dev)";
+#endif
+    if (std::system("command -v mpirun > /dev/null 2>&1") != 0) return "mpirun is not on PATH (openmpi-bin)";
+    return "";
+}
+
+#define COLLIDESCOPE_REQUIRE_MPI()                                                                           \
+    do {                                                                                                     \
+        const std::string missing = ::collidescope::testing_mpi::mpi_missing();                              \
+        if (!missing.empty()) {                                                                              \
+            if (::collidescope::testing_mpi::under_ci()) FAIL() << missing << " (CI=true: scripts/setup.sh installs Open MPI)"; \
+            GTEST_SKIP() << missing;                                                                         \
+        }                                                                                                    \
+    } while (0)
+
+inline std::string quoted(const std::string& word) {
+    std::string out = "'";
+    for (const char c : word) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+/// The shell command that runs `args` on `ranks` ranks in `dir`, output to mpi.stdout and
+/// mpi.stderr there. `exec`s mpirun itself, so a shell started with it becomes mpirun (a test
+/// can signal that pid); `limit` > 0 ends a run that hangs after that many seconds (exit 124),
+/// through `timeout`, which then sits between the shell and mpirun.
+inline std::string mpirun_command(int ranks, const std::vector<std::string>& args, const std::filesystem::path& dir,
+                                  int limit = 300) {
+    setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+    setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+    std::string command = "cd " + quoted(dir.string()) + " && exec env ASAN_OPTIONS=detect_leaks=0 " +
+                          (limit > 0 ? "timeout " + std::to_string(limit) + " " : std::string()) +
+                          "mpirun --oversubscribe -np " + std::to_string(ranks) + " " + quoted(COLLIDESCOPE_BIN);
+    for (const std::string& arg : args) command += ' ' + quoted(arg);
+    return command + " > mpi.stdout 2> mpi.stderr";
+}
+
+/// Runs `args` on `ranks` ranks in `dir` and waits.
+inline testing::CliResult run_mpi(int ranks, const std::vector<std::string>& args, const std::filesystem::path& dir) {
+    const int status = std::system(mpirun_command(ranks, args, dir).c_str());
+    testing::CliResult result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = testing::read_text(dir / "mpi.stdout");
+    result.err = testing::read_text(dir / "mpi.stderr");
+    return result;
+}
+
+inline std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
+    args.insert(args.end(), more.begin(), more.end());
+    return args;
+}
+
+}  // namespace collidescope::testing_mpi
