@@ -11,6 +11,8 @@
 
 #include "ranks.hpp"
 
+#include "mpi_run.hpp"
+
 #include "support/cli_runner.hpp"
 #include "mesh/temp_files.hpp"
 
@@ -30,7 +32,6 @@
 #include <sstream>
 #include <thread>
 
-extern char** environ;
 
 namespace collidescope {
 namespace {
@@ -65,69 +66,11 @@ TEST(FrameBlocks, MoreRanksThanFramesIsAnError) {
     EXPECT_NO_THROW(app::ranks::block_of({0, 4}, 3, 4));
 }
 
-bool under_ci() {
-    const char* ci = std::getenv("CI");
-    return ci != nullptr && std::string(ci) == "true";
-}
-
-// Why MPI runs cannot be tested here, or "".
-std::string mpi_missing() {
-#if !COLLIDESCOPE_MPI
-    return "collidescope was built without Open MPI (libopenmpi-dev)";
-#endif
-    if (std::system("command -v mpirun > /dev/null 2>&1") != 0) return "mpirun is not on PATH (openmpi-bin)";
-    return "";
-}
-
-#define REQUIRE_MPI()                                                                                     \
-    do {                                                                                                  \
-        const std::string missing = mpi_missing();                                                        \
-        if (!missing.empty()) {                                                                           \
-            if (under_ci()) FAIL() << missing << " (CI=true: scripts/setup.sh installs Open MPI)";         \
-            GTEST_SKIP() << missing;                                                                      \
-        }                                                                                                 \
-    } while (0)
-
-std::string quoted(const std::string& word) {
-    std::string out = "'";
-    for (const char c : word) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
-// The shell command that runs `args` on `ranks` ranks in `dir`, output to mpi.stdout/.stderr;
-// a run that hangs is ended after 5 minutes (exit 124).
-std::string mpirun_command(int ranks, const std::vector<std::string>& args, const fs::path& dir) {
-    // CI runs as root; Open MPI needs both variables to allow it.
-    setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-    setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-    // In the AddressSanitizer build (scripts/sanitize.sh address) the ranks check memory errors
-    // but not leaks: Open MPI's components are dlopen'ed and closed again by MPI_Finalize, so
-    // the memory they keep is reported with stacks that end in "<unknown module>", which no
-    // suppression can name (docs/sanitizers.md). The serial tests check the same code for
-    // leaks. The variable only sets this one flag; elsewhere it does nothing.
-    std::string command = "cd " + quoted(dir.string()) +
-                          " && exec env ASAN_OPTIONS=detect_leaks=0 timeout 300 mpirun --oversubscribe -np " + std::to_string(ranks) +
-                          " " + quoted(COLLIDESCOPE_BIN);
-    for (const std::string& arg : args) {
-        command += ' ';
-        command += quoted(arg);
-    }
-    return command + " > mpi.stdout 2> mpi.stderr";
-}
-
-CliResult run_mpi(int ranks, const std::vector<std::string>& args, const fs::path& dir) {
-    const int status = std::system(mpirun_command(ranks, args, dir).c_str());
-    CliResult result;
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = testing::read_text(dir / "mpi.stdout");
-    result.err = testing::read_text(dir / "mpi.stderr");
-    return result;
-}
-
-std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
-    args.insert(args.end(), more.begin(), more.end());
-    return args;
-}
+using testing_mpi::frames_complete_now;
+using testing_mpi::mpirun_command;
+using testing_mpi::quoted;
+using testing_mpi::run_mpi;
+using testing_mpi::with;
 
 // (frame, colliding_pairs) of each stats line, in the file's order.
 std::vector<std::pair<long, long>> stats_frames(const std::string& jsonl) {
@@ -159,7 +102,7 @@ const std::vector<SceneMethods> k_cases = {
 };
 
 TEST(MpiCheck, TwoAndThreeRanksGiveTheSerialPairsStatsAndExitCode) {
-    REQUIRE_MPI();
+    COLLIDESCOPE_REQUIRE_MPI();
     TempDir dir;
     for (const SceneMethods& c : k_cases) {
         for (const std::string& method : c.methods) {
@@ -207,7 +150,7 @@ void expect_serial_recording(const fs::path& dir, const std::string& file) {
 }
 
 TEST(MpiRecord, TwoRanksJoinVirtuallyByDefaultAndCopyOnRequest) {
-    REQUIRE_MPI();
+    COLLIDESCOPE_REQUIRE_MPI();
     TempDir dir;
     const std::vector<std::string> record = {"record", "--scene", "D:small", "--method", "aabb", "--threads", "1", "-q"};
     ASSERT_EQ(testing::run_cli(with(record, {"-o", "serial.h5"}), dir.path()).exit_code, 0);
@@ -232,7 +175,7 @@ TEST(MpiRecord, TwoRanksJoinVirtuallyByDefaultAndCopyOnRequest) {
 }
 
 TEST(MpiFaults, BadFrameInOneBlockNamesRankAndFrameAndKeepsFinishedFrames) {
-    REQUIRE_MPI();
+    COLLIDESCOPE_REQUIRE_MPI();
     TempDir dir;
     ASSERT_EQ(testing::run_cli({"export", "C:small", "--frames", ":16", "-o", "scene", "-q"}, dir.path()).exit_code, 0);
     const std::vector<std::string> check = {"check", "scene/scene.json", "--method", "aabb", "--threads", "1", "-q"};
@@ -272,13 +215,6 @@ TEST(MpiFaults, BadFrameInOneBlockNamesRankAndFrameAndKeepsFinishedFrames) {
     }
 }
 
-std::uint64_t frames_complete_now(const fs::path& file) {
-    try {
-        return recorder::Recording(file).frames_complete();
-    } catch (const InputError&) {
-        return 0;
-    }
-}
 
 // The pid of the process whose environment holds both `tag` and OMPI_COMM_WORLD_RANK=`rank`.
 pid_t find_rank(const std::string& tag, int rank) {
@@ -299,7 +235,7 @@ pid_t find_rank(const std::string& tag, int rank) {
 }
 
 TEST(MpiFaults, SigkillOfARankEndsTheRunNamingItAndKeepsEveryFinishedFrame) {
-    REQUIRE_MPI();
+    COLLIDESCOPE_REQUIRE_MPI();
     TempDir dir;
     // C's first 60 frames on AABB trees, one thread: about 60 ms a frame, 2 s per rank.
     const std::string tag = "COLLIDESCOPE_TEST_JOB=" + std::to_string(getpid());
@@ -307,12 +243,8 @@ TEST(MpiFaults, SigkillOfARankEndsTheRunNamingItAndKeepsEveryFinishedFrame) {
                                 mpirun_command(2, {"record", "--scene", "C", "--frames", ":60", "--method", "aabb", "--threads",
                                                    "1", "-q", "-o", "run.h5"},
                                                dir.path());
-    std::vector<std::string> words = {"/bin/sh", "-c", command};
-    std::vector<char*> argv;
-    for (std::string& word : words) argv.push_back(word.data());
-    argv.push_back(nullptr);
-    pid_t mpirun = -1;
-    ASSERT_EQ(posix_spawn(&mpirun, "/bin/sh", nullptr, nullptr, argv.data(), environ), 0);
+    const pid_t mpirun = testing_mpi::spawn_shell(command);
+    ASSERT_GT(mpirun, 0);
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
     bool killed = false;
     while (!killed && std::chrono::steady_clock::now() < deadline) {

@@ -26,7 +26,6 @@
 #include <regex>
 #include <thread>
 
-extern char** environ;
 
 namespace collidescope {
 namespace {
@@ -34,6 +33,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::CliResult;
 using testing_files::TempDir;
+using testing_mpi::frames_complete_now;
 using testing_mpi::run_mpi;
 using testing_mpi::with;
 
@@ -131,25 +131,14 @@ TEST(MpiCheck, RankZeroPrintsOneTotalLineInTheSerialForm) {
     }
 }
 
-std::uint64_t frames_complete_now(const fs::path& file) {
-    try {
-        return recorder::Recording(file).frames_complete();
-    } catch (const InputError&) {
-        return 0;
-    }
-}
 
 // Runs `command` (mpirun_command without a time limit: the shell execs mpirun), sends mpirun
 // SIGINT once `ready()` holds, as Ctrl-C at a terminal does (the ranks are in process groups of
 // their own; Open MPI 4.1 passes it on to them as SIGTERM, docs/mpi.md), and returns mpirun's
 // wait status. Fails the test when the run ended before `ready()` or still ran after 240 s.
 int sigint_to_mpirun_when(const std::string& command, const std::function<bool()>& ready) {
-    std::vector<std::string> words = {"/bin/sh", "-c", command};
-    std::vector<char*> argv;
-    for (std::string& word : words) argv.push_back(word.data());
-    argv.push_back(nullptr);
-    pid_t mpirun = -1;
-    EXPECT_EQ(posix_spawn(&mpirun, "/bin/sh", nullptr, nullptr, argv.data(), environ), 0);
+    const pid_t mpirun = testing_mpi::spawn_shell(command);
+    EXPECT_GT(mpirun, 0);
     if (mpirun <= 0) return -1;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(240);
     bool sent = false;
