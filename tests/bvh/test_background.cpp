@@ -109,11 +109,11 @@ TEST(BackgroundRebuild, DestroyedWhileAWorkerRuns) {
     topology->triangles = mesh.triangles;
     topology->vertex_count = static_cast<std::uint32_t>(mesh.vertices.size());
     {
-        BackgroundRebuild background(BuildConfig{});
+        BackgroundRebuild background;
         background.start({{0, topology, mesh.vertices, 0, RebuildReason::Quality}});
         EXPECT_TRUE(background.busy());
     }  // the destructor waits for the worker
-    BackgroundRebuild background(BuildConfig{});
+    BackgroundRebuild background;
     EXPECT_FALSE(background.take(false).has_value());
     background.start({{3, topology, mesh.vertices, 7, RebuildReason::Quality}});
     std::optional<std::vector<RebuiltTree>> done = background.take(true);
@@ -170,6 +170,7 @@ TEST(AabbDeterminism, SameCountsForEveryThreadCount) {
             EXPECT_EQ(a.candidate_pairs, b.candidate_pairs);
             EXPECT_EQ(a.colliding_pairs, b.colliding_pairs);
             EXPECT_EQ(a.rebuilds, b.rebuilds);
+            EXPECT_EQ(a.self_culled_triangles, b.self_culled_triangles);
             EXPECT_EQ(runs[k].stats[f].aabb->tree_quality, runs[0].stats[f].aabb->tree_quality);
         }
     }

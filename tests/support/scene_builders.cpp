@@ -2,6 +2,8 @@
 
 #include "support/scene_builders.hpp"
 
+#include <cmath>
+
 namespace collidescope::testing {
 namespace {
 
@@ -34,6 +36,48 @@ MeshData grid_sheet(std::uint32_t cells, double size, const Vec3& origin) {
         }
     }
     mesh.triangles = grid_triangles(cells);
+    return mesh;
+}
+
+MeshData surface_grid(std::uint32_t columns, std::uint32_t rows, const std::function<Vec3(double, double)>& place) {
+    MeshData mesh;
+    for (std::uint32_t j = 0; j <= rows; ++j)
+        for (std::uint32_t i = 0; i <= columns; ++i)
+            mesh.vertices.push_back(place(static_cast<double>(i) / columns, static_cast<double>(j) / rows));
+    const std::uint32_t stride = columns + 1;
+    for (std::uint32_t j = 0; j < rows; ++j) {
+        for (std::uint32_t i = 0; i < columns; ++i) {
+            const std::uint32_t v = j * stride + i;
+            mesh.triangles.push_back({v, v + 1, v + stride + 1});
+            mesh.triangles.push_back({v, v + stride + 1, v + stride});
+        }
+    }
+    return mesh;
+}
+
+MeshData helix_ramp(double turns, const std::function<double(double)>& height, std::uint32_t segments_per_turn) {
+    const double sweep = 2 * 3.141592653589793 * turns;
+    const auto columns = static_cast<std::uint32_t>(std::ceil(turns * segments_per_turn));
+    return surface_grid(columns, 3, [&](double u, double v) {
+        const double angle = sweep * u, radius = 1 + v;
+        return Vec3(radius * std::cos(angle), radius * std::sin(angle), height(angle));
+    });
+}
+
+MeshData slit_sheet(std::uint32_t cells, std::uint32_t slit) {
+    MeshData mesh = surface_grid(cells, cells, [&](double u, double v) { return Vec3(cells * u, cells * v, 0); });
+    const std::uint32_t stride = cells + 1, mid = cells / 2;
+    std::vector<std::uint32_t> twin(mesh.vertices.size());
+    for (std::uint32_t v = 0; v < twin.size(); ++v) twin[v] = v;
+    for (std::uint32_t j = 0; j < slit; ++j) {  // row j of the slit line gets a twin
+        twin[j * stride + mid] = static_cast<std::uint32_t>(mesh.vertices.size());
+        mesh.vertices.push_back(mesh.vertices[j * stride + mid]);
+    }
+    for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+        const std::uint32_t cell = t / 2, row = cell / cells, column = cell % cells;
+        if (column != mid || row >= slit) continue;  // the cells right of the slit
+        for (std::uint32_t& v : mesh.triangles[t]) v = twin[v];
+    }
     return mesh;
 }
 

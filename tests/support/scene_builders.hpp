@@ -8,6 +8,7 @@
 #include "collidescope/scene.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -26,6 +27,21 @@ MeshData crumpled_sheet(std::mt19937_64& rng, std::uint32_t cells, double amplit
 /// `triangles` triangles with corners on the integer grid [0, extent]^3 times `scale`,
 /// sometimes degenerate (a repeated corner), vertices not shared.
 MeshData grid_soup(std::mt19937_64& rng, std::uint32_t triangles, int extent, double scale = 1.0);
+
+/// A (columns x rows)-cell grid surface with vertex (i, j) at place(i / columns, j / rows),
+/// two triangles per cell, consistently oriented (shared vertices and edges).
+MeshData surface_grid(std::uint32_t columns, std::uint32_t rows, const std::function<Vec3(double, double)>& place);
+
+/// A ramp winding `turns` times about the z axis between radii 1 and 2, at height
+/// height(angle) (angle in radians from 0): every triangle projects onto the xy plane with
+/// the same orientation, yet after a turn the ramp lies over itself, so its outline does not
+/// project to a simple polygon. height = 0: a coplanar double cover; crossing layers pierce.
+MeshData helix_ramp(double turns, const std::function<double(double)>& height, std::uint32_t segments_per_turn = 24);
+
+/// A flat (cells x cells) grid sheet in the plane z = 0 with a slit along x = cells / 2 from
+/// the edge y = 0 for `slit` cells: the vertices on the slit but its inner end are duplicated
+/// for the triangles on its right, so the two lips touch along the slit by position only.
+MeshData slit_sheet(std::uint32_t cells, std::uint32_t slit);
 
 /// Copies `mesh` moved by `offset`.
 MeshData translated(MeshData mesh, const Vec3& offset);

@@ -48,6 +48,9 @@ struct FrameCounts {
     /// when the embedding facade viewed the caller's packed doubles in place, V * 24 per
     /// object it converted (float32, strided); 0 for scenes read or generated.
     std::uint64_t positions_copied_bytes = 0;
+    /// Triangles of self-collision objects whose own pairs the method proved apart without
+    /// testing them (one-way normals and a simple contour, docs/algorithms.md; Mode 1 trees).
+    std::uint64_t self_culled_triangles = 0;
 };
 
 /// Calls `visit(name, milliseconds)` for every StageTimes field in declaration order. This
@@ -82,6 +85,7 @@ void for_each_count(const FrameCounts& counts, Visitor&& visit) {
     visit("rebuilds", counts.rebuilds);
     visit("exact_shortcuts", counts.exact_shortcuts);
     visit("positions_copied_bytes", counts.positions_copied_bytes);
+    visit("self_culled_triangles", counts.self_culled_triangles);
 }
 
 /// Bits of AabbFrameInfo::rebuild_reasons (the same values as bvh::RebuildReason).

@@ -30,6 +30,15 @@ std::vector<std::uint32_t> used_objects(const FrameContext& context) {
     return objects;
 }
 
+// Objects tested against themselves this frame: their trees carry surface patches.
+std::vector<std::uint32_t> self_objects(const FrameContext& context) {
+    std::vector<std::uint32_t> objects;
+    if (!context.self_collision) return objects;
+    for (const ObjectPair& pair : context.object_pairs)
+        if (pair.a == pair.b) objects.push_back(pair.a);
+    return objects;
+}
+
 std::vector<WorkItem> roots(const FrameContext& context, const ObjectTrees& trees) {
     std::vector<WorkItem> items;
     for (const ObjectPair& pair : context.object_pairs) {
@@ -55,7 +64,7 @@ TraversalStats AabbCuller::cull(const FrameContext& context, std::vector<Triangl
     m_used = used_objects(context);
     AabbFrameInfo info = stats.aabb.value_or(AabbFrameInfo{});
     const double start = now();
-    m_trees->begin_frame(frame.objects.size());
+    m_trees->begin_frame(frame.objects.size(), self_objects(context));
     m_trees->swap_finished(frame, m_config.background == BackgroundMode::NextFrame, info);
     m_trees->build_missing(frame, m_used, info);
     const double built = now();
@@ -76,6 +85,7 @@ TraversalStats AabbCuller::cull(const FrameContext& context, std::vector<Triangl
     stats.counts.box_tests += traversal.box_tests;
     stats.counts.candidate_pairs += traversal.candidate_pairs;
     stats.counts.nodes_visited += traversal.nodes_visited;
+    stats.counts.self_culled_triangles += traversal.self_culled_triangles;
     stats.counts.rebuilds += info.rebuilt_objects + info.background_started;
     stats.aabb = info;
     TraversalStats result = traversal;

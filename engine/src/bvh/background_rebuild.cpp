@@ -14,12 +14,12 @@ BackgroundRebuild::~BackgroundRebuild() {
 
 void BackgroundRebuild::start(std::vector<RebuildJob> jobs) {
     assert(!busy());
-    m_result = std::async(std::launch::async, [config = m_config, jobs = std::move(jobs)]() mutable {
+    m_result = std::async(std::launch::async, [jobs = std::move(jobs)]() mutable {
         std::vector<RebuiltTree> trees;
         trees.reserve(jobs.size());
         for (RebuildJob& job : jobs) {
             RebuiltTree rebuilt;
-            rebuilt.stats = build_tree(job.topology->triangles, job.vertices, config, rebuilt.tree);
+            rebuilt.stats = build_tree(job.topology->triangles, job.vertices, job.config, rebuilt.tree);
             rebuilt.job = std::move(job);
             trees.push_back(std::move(rebuilt));
         }

@@ -23,6 +23,7 @@ struct RebuildJob {
     std::vector<Vec3> vertices;  ///< a copy of the frame's positions
     std::uint32_t frame = 0;     ///< the frame the snapshot was taken at
     RebuildReason reason = RebuildReason::None;
+    BuildConfig config;          ///< the build's options (surface patches or not)
 };
 
 /// A finished job: the tree fits job.vertices (the snapshot), not necessarily the current frame.
@@ -36,7 +37,7 @@ struct RebuiltTree {
 /// touches the batch it was given.
 class BackgroundRebuild {
 public:
-    explicit BackgroundRebuild(BuildConfig config) : m_config(config) {}
+    BackgroundRebuild() = default;
     /// Waits for a batch still running (its trees are dropped).
     ~BackgroundRebuild();
     BackgroundRebuild(const BackgroundRebuild&) = delete;
@@ -53,7 +54,6 @@ public:
     std::optional<std::vector<RebuiltTree>> take(bool wait);
 
 private:
-    BuildConfig m_config;
     std::future<std::vector<RebuiltTree>> m_result;
 };
 

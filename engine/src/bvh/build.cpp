@@ -2,6 +2,7 @@
 // then a refit for the boxes (both builders leave boxes to it).
 
 #include "bvh/build_internal.hpp"
+#include "bvh/surface_patches.hpp"
 
 #include "common/stopwatch.hpp"
 
@@ -146,6 +147,7 @@ BuildStats build_tree(std::span<const TriIndices> triangles, std::span<const Vec
         for (std::uint32_t k = r.begin(); k != r.end(); ++k) tree.leaf_triangles[k] = triangles[tree.triangle_ids[k]];
     });
     tree.refit_plan = plan_refit(tree, std::max(config.refit_grain, 1u));
+    if (config.surface_patches) build_surface_patches(tree);
     const RefitStats fitted = refit(tree, triangles, vertices);
     tree.built_cost = fitted.sah_cost;
     stats.nodes = static_cast<std::uint32_t>(tree.nodes.size());

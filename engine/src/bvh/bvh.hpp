@@ -121,6 +121,22 @@ struct RefitPlan {
     std::vector<std::uint32_t> inner;     ///< the subtrees' inner nodes, subtree by subtree, in preorder
 };
 
+/// What self-collision culling knows of each node's triangles (bvh/surface_patches.hpp):
+/// the boundary loop, from the topology at the build, and the projected orientations, from
+/// every refit. Empty unless the tree was built with BuildConfig::surface_patches.
+struct SurfacePatches {
+    std::vector<std::uint32_t> loop_begin;     ///< per node: first corner in loop_vertices
+    std::vector<std::uint32_t> loop_size;      ///< per node: corners; 0: not one boundary loop
+    std::vector<std::uint32_t> loop_vertices;  ///< the loops' vertex indices, in order
+    std::vector<std::uint32_t> triangles;      ///< per node: triangles below it
+    /// Per node, refreshed by refit: bit 2k set when every triangle below projects with
+    /// positive orientation onto the plane that drops axis k, bit 2k + 1 when every one
+    /// projects with negative orientation.
+    std::vector<std::uint8_t> sides;
+
+    bool empty() const { return loop_size.empty(); }
+};
+
 /// The hierarchy of one object. Empty (no nodes) for an object without triangles.
 struct Tree {
     std::vector<Node> nodes;                 ///< preorder; nodes[0] is the root
@@ -130,6 +146,7 @@ struct Tree {
     /// gathering through triangle_ids (it halved refit's cache misses).
     std::vector<TriIndices> leaf_triangles;
     RefitPlan refit_plan;
+    SurfacePatches patches;  ///< self-collision culling's per-node data (may be empty)
     double built_cost = 0;  ///< sah_cost right after the last build (quality reference)
 
     bool empty() const { return nodes.empty(); }
@@ -149,6 +166,8 @@ struct BuildConfig {
     std::uint32_t sah_bins = 16;       ///< bins per axis for the SAH builder
     std::uint32_t parallel_grain = 4096;  ///< ranges below this many triangles build serially
     std::uint32_t refit_grain = 2048;  ///< nodes per parallel refit subtree (RefitPlan)
+    /// Also build Tree::patches (objects tested for self-collision).
+    bool surface_patches = false;
 };
 
 /// What a build did.
@@ -177,7 +196,7 @@ struct RefitStats {
 
 /// Recomputes every node box bottom-up from `vertices` (same topology as at the build):
 /// leaves from their triangles, inner nodes as the union of their children; the subtrees of
-/// the refit plan in parallel, then the top. Deterministic.
+/// the refit plan in parallel, then the top. Deterministic. With patches, their sides too.
 RefitStats refit(Tree& tree, std::span<const TriIndices> triangles, std::span<const Vec3> vertices);
 
 /// The SAH cost of a tree: (sum over inner nodes of half_area + sum over leaves of

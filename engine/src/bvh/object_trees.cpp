@@ -2,6 +2,8 @@
 
 #include "bvh/object_trees.hpp"
 
+#include "bvh/surface_patches.hpp"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -19,11 +21,18 @@ std::uint8_t bit(RebuildReason reason) { return static_cast<std::uint8_t>(reason
 }  // namespace
 
 ObjectTrees::ObjectTrees(const AabbConfig& config)
-    : m_config(config), m_policy(config.policy), m_background(config.build) {}
+    : m_config(config), m_policy(config.policy) {}
 
-void ObjectTrees::begin_frame(std::size_t objects) {
+void ObjectTrees::begin_frame(std::size_t objects, std::span<const std::uint32_t> self) {
     if (m_trees.size() < objects) m_trees.resize(objects);
-    for (ObjectTree& tree : m_trees) tree.fitted = tree.fresh = false;
+    for (ObjectTree& tree : m_trees) tree.fitted = tree.fresh = tree.self = false;
+    for (const std::uint32_t object : self) m_trees[object].self = true;
+}
+
+BuildConfig ObjectTrees::build_config(std::uint32_t object) const {
+    BuildConfig config = m_config.build;
+    config.surface_patches = m_trees[object].self;
+    return config;
 }
 
 void ObjectTrees::notify(TreeEventKind kind, std::uint32_t object, const ObjectFrame& mesh) const {
@@ -62,7 +71,8 @@ void ObjectTrees::build(const Frame& frame, std::span<const std::uint32_t> objec
         for (std::size_t k = range.begin(); k != range.end(); ++k) {
             const ObjectFrame& mesh = frame.objects[objects[k]];
             ObjectTree& slot = m_trees[objects[k]];
-            const BuildStats stats = build_tree(mesh.topology->triangles, mesh.vertices, m_config.build, slot.tree);
+            const BuildStats stats =
+                build_tree(mesh.topology->triangles, mesh.vertices, build_config(objects[k]), slot.tree);
             slot.topology = mesh.topology;
             slot.build_ms = stats.ms;
             slot.quality = 1;
@@ -97,6 +107,10 @@ void ObjectTrees::refit_rest(const Frame& frame, std::span<const std::uint32_t> 
         for (std::size_t k = range.begin(); k != range.end(); ++k) {
             const ObjectFrame& mesh = frame.objects[stale[k]];
             ObjectTree& slot = m_trees[stale[k]];
+            // A tree built before its object was first tested against itself (or by a worker
+            // started then) gets its patches now; one that no longer needs them drops them.
+            if (slot.self && slot.tree.patches.empty()) build_surface_patches(slot.tree);
+            if (!slot.self && !slot.tree.patches.empty()) slot.tree.patches = SurfacePatches{};
             slot.quality = refit(slot.tree, mesh.topology->triangles, mesh.vertices).quality;
             slot.fitted = true;
         }
@@ -135,7 +149,7 @@ void ObjectTrees::hand_to_worker(const Frame& frame, std::span<const std::uint32
     for (const std::uint32_t object : objects) {
         const ObjectFrame& mesh = frame.objects[object];
         // The worker outlives this frame, whose vertices may view caller memory: it gets a copy.
-        jobs.push_back({object, mesh.topology, mesh.vertices.to_vector(), frame.index, reason});
+        jobs.push_back({object, mesh.topology, mesh.vertices.to_vector(), frame.index, reason, build_config(object)});
         m_trees[object].pending = true;
     }
     m_background.start(std::move(jobs));

@@ -24,6 +24,7 @@ struct ObjectTree {
     bool pending = false;   ///< a rebuild of it is in flight on the worker
     bool fitted = false;    ///< its boxes fit the current frame (built or refit this frame)
     bool fresh = false;     ///< built this frame (the policy leaves it alone)
+    bool self = false;      ///< tested against itself this frame: its tree carries surface patches
 };
 
 /// The trees of every object, kept across frames. Engine thread only.
@@ -31,8 +32,9 @@ class ObjectTrees {
 public:
     explicit ObjectTrees(const AabbConfig& config);
 
-    /// Marks every tree unfitted for a new frame of `objects` objects.
-    void begin_frame(std::size_t objects);
+    /// Marks every tree unfitted for a new frame of `objects` objects, of which `self` are
+    /// tested against themselves (their trees get surface patches).
+    void begin_frame(std::size_t objects, std::span<const std::uint32_t> self);
     /// Installs finished worker trees whose topology is still current (wait: block for them).
     void swap_finished(const Frame& frame, bool wait, AabbFrameInfo& info);
     /// Builds the trees of `used` objects that have none or whose topology changed.
@@ -58,6 +60,8 @@ private:
     void hand_to_worker(const Frame& frame, std::span<const std::uint32_t> objects, RebuildReason reason,
                         AabbFrameInfo& info);
     void notify(TreeEventKind kind, std::uint32_t object, const ObjectFrame& mesh) const;
+    /// The build options for one object's tree.
+    BuildConfig build_config(std::uint32_t object) const;
 
     const AabbConfig& m_config;
     RebuildPolicy m_policy;

@@ -4,6 +4,7 @@
 // The SAH cost is summed on the way, per subtree and then in plan order (deterministic).
 
 #include "bvh/bvh.hpp"
+#include "bvh/surface_patches.hpp"
 
 #include "common/stopwatch.hpp"
 
@@ -73,9 +74,13 @@ struct Bounds {
 };
 
 // Fits an inner node from its children (already fitted), with one store, and returns its
-// node_cost from the registers.
+// node_cost from the registers. With patches, its sides are its children's common sides.
 double fit_inner(Tree& tree, std::uint32_t index) {
     Node& node = tree.nodes[index];
+    if (!tree.patches.empty()) {
+        std::vector<std::uint8_t>& sides = tree.patches.sides;
+        sides[index] = sides[index + 1] & sides[node.index];
+    }
     Bounds bounds = Bounds::empty();
     bounds.grow(tree.nodes[index + 1].box);
     bounds.grow(tree.nodes[node.index].box);
@@ -93,20 +98,30 @@ constexpr std::uint32_t kPrefetchSlots = 16;
 // backward walk it replaces branched on leaf or inner node per node, unpredictably, and
 // called out and reloaded each box for its cost (docs/algorithms.md, "Refit").
 // Exact: min and max only, so a box is the same whatever the order.
+// kSides: also each leaf's patch sides (the triangles' common projected orientations).
+template <bool kSides>
 double fit_subtree(Tree& tree, const RefitSubtree& subtree, std::span<const Vec3> vertices) {
     const RefitPlan& plan = tree.refit_plan;
     Node* nodes = tree.nodes.data();
     const TriIndices* tris = tree.leaf_triangles.data();
     const std::uint32_t* leaf = plan.leaves.data() + subtree.leaf_begin;
     double cost = 0;
+    std::uint8_t* sides = tree.patches.sides.data();
+    std::uint8_t leaf_sides = 0x3f;
     Bounds bounds = Bounds::empty();
     std::uint32_t count = 0;
     for (std::uint32_t k = subtree.slot_begin; k < subtree.slot_end; ++k) {
         const TriIndices& ahead = tris[std::min(k + kPrefetchSlots, subtree.slot_end - 1)];
         for (const std::uint32_t v : ahead) __builtin_prefetch(vertices.data() + v);
-        bounds.grow(Bounds::of(vertices[tris[k][0]], vertices[tris[k][1]], vertices[tris[k][2]]));
+        const Vec3 &a = vertices[tris[k][0]], &b = vertices[tris[k][1]], &c = vertices[tris[k][2]];
+        bounds.grow(Bounds::of(a, b, c));
+        if constexpr (kSides) leaf_sides &= triangle_sides(a, b, c);
         ++count;
         if (plan.leaf_ends[k]) {
+            if constexpr (kSides) {
+                sides[*leaf] = leaf_sides;
+                leaf_sides = 0x3f;
+            }
             bounds.store(nodes[*leaf++].box);
             cost += bounds.half_area() * count;
             bounds = Bounds::empty();
@@ -138,11 +153,13 @@ RefitStats refit(Tree& tree, std::span<const TriIndices> triangles, std::span<co
     assert(triangles.size() == tree.leaf_triangles.size());
     (void)triangles;
     const RefitPlan& plan = tree.refit_plan;
+    const bool with_sides = !tree.patches.empty();
     std::vector<double> subtree_cost(plan.subtrees.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, plan.subtrees.size(), 1),
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t s = range.begin(); s != range.end(); ++s) {
-            subtree_cost[s] = fit_subtree(tree, plan.subtrees[s], vertices);
+            subtree_cost[s] = with_sides ? fit_subtree<true>(tree, plan.subtrees[s], vertices)
+                                         : fit_subtree<false>(tree, plan.subtrees[s], vertices);
         }
     });
     double cost = 0;

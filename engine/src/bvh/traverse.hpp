@@ -43,11 +43,14 @@ struct TraversalStats {
     std::uint64_t nodes_visited = 0;    ///< node pairs tested plus self nodes entered
     std::uint64_t box_tests = 0;        ///< node-pair and triangle-pair box tests
     std::uint64_t candidate_pairs = 0;  ///< triangle pairs whose boxes overlap
+    /// Triangles below self nodes proven embedded (surface_patches.hpp), their pairs skipped.
+    std::uint64_t self_culled_triangles = 0;
 
     void add(const TraversalStats& other) {
         nodes_visited += other.nodes_visited;
         box_tests += other.box_tests;
         candidate_pairs += other.candidate_pairs;
+        self_culled_triangles += other.self_culled_triangles;
     }
 };
 

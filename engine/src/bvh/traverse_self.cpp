@@ -1,8 +1,11 @@
-// Self-traversal step (self-collision within one object): a node's pairs are its children's
-// own pairs plus the pairs between the two children. Every box-overlapping pair i < j goes to
-// the narrow phase, adjacent ones included: the exact self rule (self_triangles_collide)
-// decides them, since sharing a vertex does not prove two triangles apart (DESIGN.md).
+// Self-traversal step (self-collision within one object): a node whose triangles are proven
+// embedded this frame (surface_patches.hpp: one-way normals and a simple contour) has no
+// pairs; otherwise its pairs are its children's own pairs plus the pairs between the two
+// children. Every other box-overlapping pair i < j goes to the narrow phase, adjacent ones
+// included: the exact self rule (self_triangles_collide) decides them, since sharing a vertex
+// does not prove two triangles apart (DESIGN.md).
 
+#include "bvh/surface_patches.hpp"
 #include "bvh/traverse.hpp"
 
 namespace collidescope::bvh {
@@ -30,6 +33,13 @@ void step_self(const WorkItem& item, std::span<const MeshView> meshes, std::vect
     const MeshView& mesh = meshes[item.obj_a];
     const Node& node = mesh.tree->nodes[item.node_a];
     ++stats.nodes_visited;
+    const Tree& tree = *mesh.tree;
+    // A lone triangle has no pairs to skip.
+    if (!tree.patches.empty() && tree.patches.triangles[item.node_a] > 1 &&
+        patch_is_embedded(tree, item.node_a, mesh.vertices)) {
+        stats.self_culled_triangles += tree.patches.triangles[item.node_a];
+        return;
+    }
     if (node.is_leaf()) {
         leaf_self(item, mesh, node, candidates, stats);
         return;

@@ -25,17 +25,6 @@ bool within_box_2d(const Vec3& x, const Vec3& p, const Vec3& q, int drop) {
     return true;
 }
 
-/// Closed 2D segment contact in the projection dropping `drop`; segments may be points.
-bool segments_intersect_2d(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s,
-                           int drop) {
-    const int o1 = orient2d(p, q, r, drop), o2 = orient2d(p, q, s, drop);
-    const int o3 = orient2d(r, s, p, drop), o4 = orient2d(r, s, q, drop);
-    if (o1 * o2 < 0 && o3 * o4 < 0) return true;  // proper crossing
-    // Otherwise contact needs an endpoint on the other segment (collinear and within it).
-    return (o1 == 0 && within_box_2d(r, p, q, drop)) || (o2 == 0 && within_box_2d(s, p, q, drop)) ||
-           (o3 == 0 && within_box_2d(p, r, s, drop)) || (o4 == 0 && within_box_2d(q, r, s, drop));
-}
-
 /// x in the closed 2D triangle (a, b, c) whose projection has orientation `o` != 0.
 bool point_in_triangle_2d(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c, int o,
                           int drop) {
@@ -53,6 +42,16 @@ bool coplanar_segment_triangle(const Vec3& p, const Vec3& q, const Vec3& a, cons
 }
 
 }  // namespace
+
+bool segments_intersect_2d(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s,
+                           int drop) {
+    const int o1 = orient2d(p, q, r, drop), o2 = orient2d(p, q, s, drop);
+    const int o3 = orient2d(r, s, p, drop), o4 = orient2d(r, s, q, drop);
+    if (o1 * o2 < 0 && o3 * o4 < 0) return true;  // proper crossing
+    // Otherwise contact needs an endpoint on the other segment (collinear and within it).
+    return (o1 == 0 && within_box_2d(r, p, q, drop)) || (o2 == 0 && within_box_2d(s, p, q, drop)) ||
+           (o3 == 0 && within_box_2d(p, r, s, drop)) || (o4 == 0 && within_box_2d(q, r, s, drop));
+}
 
 int projection_axis(const Vec3& a, const Vec3& b, const Vec3& c) {
     for (int drop : {2, 1, 0})

@@ -20,6 +20,10 @@ inline bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
 /// True when x lies on the closed segment [p, q] (p == q allowed).
 bool point_on_segment(const Vec3& x, const Vec3& p, const Vec3& q);
 
+/// True when the closed segments [p, q] and [r, s], projected onto the coordinate plane that
+/// drops axis `drop`, share a point; segments may be points.
+bool segments_intersect_2d(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s, int drop);
+
 /// True when the closed segments [p, q] and [r, s] share a point.
 bool segments_intersect(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s);
 

@@ -12,6 +12,7 @@
 
 #include "collidescope/geometry.hpp"
 #include "geometry/expansion.hpp"
+#include "geometry/orient2d_filter.hpp"
 
 #include <gmp.h>
 
@@ -25,8 +26,7 @@ thread_local PredicateCounters t_counters;
 
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon() / 2;  // 2^-53
 constexpr double kOrient3dBound = 8.0 * kEpsilon;
-constexpr double kOrient2dBound = 4.0 * kEpsilon;
-constexpr double kAbsoluteBound = 0x1p-960;  // far above any underflow error in the filter
+using filter::kAbsoluteBound;  // far above any underflow error in the filters
 // Coordinates with magnitude in [2^-200, 2^200] are multiples of 2^-252, so a product of
 // three differences is a multiple of 2^-756 and below 2^603: every expansion term is exact.
 constexpr double kSafeMin = 0x1p-200;
@@ -269,20 +269,11 @@ int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
 }
 
 int orient2d(const Vec3& a, const Vec3& b, const Vec3& c, int drop) {
+    if (const int filtered = filter::orient2d_filtered(a, b, c, drop)) {
+        ++t_counters.filtered;
+        return filtered;
+    }
     const int i = (drop + 1) % 3, j = (drop + 2) % 3;
-    const double detleft = (a[i] - c[i]) * (b[j] - c[j]);
-    const double detright = (a[j] - c[j]) * (b[i] - c[i]);
-    const double det = detleft - detright;
-    const double permanent = std::fabs(detleft) + std::fabs(detright);
-    const double bound = kOrient2dBound * permanent + kAbsoluteBound;
-    if (det > bound && permanent < std::numeric_limits<double>::max()) {
-        ++t_counters.filtered;
-        return 1;
-    }
-    if (-det > bound && permanent < std::numeric_limits<double>::max()) {
-        ++t_counters.filtered;
-        return -1;
-    }
     const int cheap = orient2d_cheap(a[i], a[j], b[i], b[j], c[i], c[j]);
     if (cheap != kUndecided) {
         ++t_counters.shortcut;

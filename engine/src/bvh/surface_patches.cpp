@@ -1,0 +1,163 @@
+// Surface patches: the boundary loops, bottom-up over the tree, and the per-frame test.
+//
+// A boundary chain is a sorted list of edges (lo < hi by vertex index) with a coefficient:
+// +1 for lo -> hi, -1 for hi -> lo. A leaf's chain sums its triangles' three edges; an
+// inner node's is the sum of its children's, so edges shared by consistently oriented
+// triangles cancel. A coefficient outside {-1, 0, 1} (edges of inconsistent orientation,
+// more than two triangles) or a repeated index in a triangle leaves the node without a loop.
+
+#include "bvh/surface_patches.hpp"
+
+#include "collidescope/geometry.hpp"
+#include "geometry/orient2d_filter.hpp"
+#include "geometry/simple_loop.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace collidescope::bvh {
+namespace {
+
+struct ChainEdge {
+    std::uint32_t lo = 0, hi = 0;
+    int coef = 0;
+};
+
+bool key_less(const ChainEdge& a, const ChainEdge& b) { return a.lo < b.lo || (a.lo == b.lo && a.hi < b.hi); }
+bool same_key(const ChainEdge& a, const ChainEdge& b) { return a.lo == b.lo && a.hi == b.hi; }
+
+struct Chain {
+    std::vector<ChainEdge> edges;
+    bool valid = false;
+};
+
+/// Appends `edge` to the sorted `out`, adding it to an equal last key; false when a
+/// coefficient would leave {-1, 0, 1}.
+bool push(std::vector<ChainEdge>& out, const ChainEdge& edge) {
+    if (!out.empty() && same_key(out.back(), edge)) {
+        out.back().coef += edge.coef;
+        if (out.back().coef == 0) out.pop_back();
+        else if (std::abs(out.back().coef) > 1) return false;
+        return true;
+    }
+    out.push_back(edge);
+    return true;
+}
+
+Chain leaf_chain(const TriIndices* tris, std::uint32_t count) {
+    Chain chain;
+    std::vector<ChainEdge> raw;
+    raw.reserve(3 * count);
+    for (std::uint32_t t = 0; t < count; ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t u = tris[t][k], v = tris[t][(k + 1) % 3];
+            if (u == v) return chain;  // a degenerate triangle: no loop here or above
+            raw.push_back(u < v ? ChainEdge{u, v, 1} : ChainEdge{v, u, -1});
+        }
+    }
+    std::sort(raw.begin(), raw.end(), key_less);
+    for (const ChainEdge& edge : raw)
+        if (!push(chain.edges, edge)) return Chain{};
+    chain.valid = true;
+    return chain;
+}
+
+Chain merged(const Chain& a, const Chain& b) {
+    Chain chain;
+    if (!a.valid || !b.valid) return chain;
+    chain.edges.reserve(a.edges.size() + b.edges.size());
+    std::size_t i = 0, j = 0;
+    while (i < a.edges.size() || j < b.edges.size()) {
+        const bool take_a = j == b.edges.size() || (i < a.edges.size() && !key_less(b.edges[j], a.edges[i]));
+        if (!push(chain.edges, take_a ? a.edges[i++] : b.edges[j++])) return Chain{};
+    }
+    chain.valid = true;
+    return chain;
+}
+
+/// Appends the chain's loop to `out` when the chain is exactly one closed loop through
+/// distinct vertices; returns its length, or 0.
+std::uint32_t append_loop(const std::vector<ChainEdge>& edges, std::vector<std::uint32_t>& out) {
+    const std::size_t m = edges.size();
+    if (m < 3) return 0;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> next;  // (from, to)
+    next.reserve(m);
+    for (const ChainEdge& e : edges) next.emplace_back(e.coef > 0 ? e.lo : e.hi, e.coef > 0 ? e.hi : e.lo);
+    std::sort(next.begin(), next.end());
+    for (std::size_t k = 1; k < m; ++k)
+        if (next[k].first == next[k - 1].first) return 0;  // a vertex with two edges out
+    const std::size_t begin = out.size();
+    const std::uint32_t start = next[0].first;
+    std::uint32_t at = start;
+    for (std::size_t step = 0; step < m; ++step) {
+        out.push_back(at);
+        const auto it = std::lower_bound(next.begin(), next.end(), std::make_pair(at, std::uint32_t{0}));
+        if (it == next.end() || it->first != at) break;
+        at = it->second;
+        if (at == start) {
+            if (step + 1 == m) return static_cast<std::uint32_t>(m);
+            break;  // closed early: more than one loop
+        }
+    }
+    out.resize(begin);
+    return 0;
+}
+
+std::size_t max_loop(std::uint32_t triangles) {
+    return 16 + static_cast<std::size_t>(8.0 * std::sqrt(static_cast<double>(triangles)));
+}
+
+}  // namespace
+
+void build_surface_patches(Tree& tree) {
+    SurfacePatches& p = tree.patches;
+    const std::size_t n = tree.nodes.size();
+    p = SurfacePatches{};
+    p.loop_begin.assign(n, 0);
+    p.loop_size.assign(n, 0);
+    p.triangles.assign(n, 0);
+    p.sides.assign(n, 0);
+    // Reverse preorder visits children before parents; a chain lives until its parent merges it.
+    std::vector<Chain> chains(n);
+    for (std::size_t i = n; i-- > 0;) {
+        const Node& node = tree.nodes[i];
+        if (node.is_leaf()) {
+            p.triangles[i] = node.count;
+            chains[i] = leaf_chain(tree.leaf_triangles.data() + node.index, node.count);
+        } else {
+            p.triangles[i] = p.triangles[i + 1] + p.triangles[node.index];
+            chains[i] = merged(chains[i + 1], chains[node.index]);
+            chains[i + 1] = Chain{};
+            chains[node.index] = Chain{};
+        }
+        if (chains[i].valid && chains[i].edges.size() > max_loop(p.triangles[i])) chains[i] = Chain{};
+        if (!chains[i].valid) continue;
+        p.loop_begin[i] = static_cast<std::uint32_t>(p.loop_vertices.size());
+        p.loop_size[i] = append_loop(chains[i].edges, p.loop_vertices);
+    }
+}
+
+std::uint8_t triangle_sides(const Vec3& a, const Vec3& b, const Vec3& c) {
+    std::uint8_t bits = 0;
+    for (int k = 0; k < 3; ++k) {
+        const int sign = filter::orient2d_filtered(a, b, c, k);
+        if (sign > 0) bits |= static_cast<std::uint8_t>(1u << (2 * k));
+        if (sign < 0) bits |= static_cast<std::uint8_t>(2u << (2 * k));
+    }
+    return bits;
+}
+
+bool patch_is_embedded(const Tree& tree, std::uint32_t node, std::span<const Vec3> vertices) {
+    const SurfacePatches& p = tree.patches;
+    const std::uint8_t sides = p.sides[node];
+    if (sides == 0 || p.loop_size[node] == 0) return false;
+    const std::span<const std::uint32_t> loop(p.loop_vertices.data() + p.loop_begin[node], p.loop_size[node]);
+    for (int k = 0; k < 3; ++k) {
+        if ((sides >> (2 * k)) & 3u) {
+            if (contact::projected_loop_is_simple(loop, vertices, k)) return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace collidescope::bvh

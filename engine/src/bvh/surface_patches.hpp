@@ -1,0 +1,42 @@
+#pragma once
+// Self-collision culling for surfaces (engine/src/bvh): a node of an object's tree whose
+// triangles are proven embedded in space has no colliding pair under the self rule, so the
+// self-traversal skips its whole subtree (Volino and Magnenat-Thalmann 1994: the normal-cone
+// test with its contour condition, made exact; docs/algorithms.md, "Self-collision culling").
+//
+// A node's triangles P are proven embedded when, for some axis k:
+//  1. every triangle of P projects with one strict orientation onto the plane dropping k
+//     (orient2d signs certified by its filter, kept per node by refit in SurfacePatches::sides);
+//  2. the boundary chain of P (the sum of its triangles' oriented edges by vertex index, at
+//     the build) is one closed loop through distinct vertices;
+//  3. that loop projects to a simple polygon (geometry/simple_loop.hpp).
+// Then the projection is one-to-one on P: the number of triangles covering a point is the
+// winding number of the boundary loop around it, at most 1 for a simple polygon, and the
+// case analysis in docs/algorithms.md rules out contact on edges and corners. So no two
+// triangles of P meet outside their shared vertices' hull, and no two vertices coincide.
+
+#include "bvh/bvh.hpp"
+
+#include <cstdint>
+#include <span>
+
+namespace collidescope::bvh {
+
+/// Fills tree.patches for the tree's current layout: loops and triangle counts from the
+/// topology (leaf_triangles); sides sized and cleared (refit sets them). A node whose
+/// boundary is not one loop, or is too long to be worth testing (more than 16 + 8 sqrt(t)
+/// edges for t triangles), gets no loop, and neither do its ancestors then.
+void build_surface_patches(Tree& tree);
+
+/// SurfacePatches::sides bits of the triangle (a, b, c): the projected orientations that
+/// orient2d's floating-point filter certifies. An orientation the filter leaves open (zero,
+/// or nearly: the triangle is edge-on or nearly so to that axis) sets no bit, which can only
+/// keep a node from being culled. A flat cloth's exact zeros would otherwise cost two exact
+/// evaluations per triangle per frame.
+std::uint8_t triangle_sides(const Vec3& a, const Vec3& b, const Vec3& c);
+
+/// True when the triangles below `node` are proven embedded for `vertices` (the positions
+/// the tree was last fitted to): conditions 1 to 3 above. Requires non-empty patches.
+bool patch_is_embedded(const Tree& tree, std::uint32_t node, std::span<const Vec3> vertices);
+
+}  // namespace collidescope::bvh
