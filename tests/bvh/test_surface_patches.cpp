@@ -119,6 +119,14 @@ TEST(SurfacePatches, FlatSheetIsOneLoopAroundItsOutlineAndEmbedded) {
     expect_loops_match(tree);
 }
 
+TEST(SurfacePatches, SurfaceLikeTellsSheetsFromSoups) {
+    EXPECT_TRUE(surface_like(testing::grid_sheet(6, 1.0).triangles));
+    EXPECT_TRUE(surface_like(testing::helix_ramp(1.5, [](double) { return 0.0; }).triangles));
+    std::mt19937_64 rng(3);
+    EXPECT_FALSE(surface_like(testing::grid_soup(rng, 200, 4).triangles));  // no vertex shared
+    EXPECT_TRUE(surface_like(std::vector<TriIndices>{}));                  // nothing to lose
+}
+
 TEST(SurfacePatches, SidesAreTheCertifiedOrientationsOfEveryTriangleBelow) {
     std::mt19937_64 rng(5);
     const MeshData mesh = testing::crumpled_sheet(rng, 12, 0.3, true);

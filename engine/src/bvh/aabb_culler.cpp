@@ -64,7 +64,7 @@ TraversalStats AabbCuller::cull(const FrameContext& context, std::vector<Triangl
     m_used = used_objects(context);
     AabbFrameInfo info = stats.aabb.value_or(AabbFrameInfo{});
     const double start = now();
-    m_trees->begin_frame(frame.objects.size(), self_objects(context));
+    m_trees->begin_frame(frame, self_objects(context));
     m_trees->swap_finished(frame, m_config.background == BackgroundMode::NextFrame, info);
     m_trees->build_missing(frame, m_used, info);
     const double built = now();

@@ -146,6 +146,7 @@ BuildStats build_tree(std::span<const TriIndices> triangles, std::span<const Vec
     tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 8192), [&](const tbb::blocked_range<std::uint32_t>& r) {
         for (std::uint32_t k = r.begin(); k != r.end(); ++k) tree.leaf_triangles[k] = triangles[tree.triangle_ids[k]];
     });
+    tree.leaf_boxes.resize(n);
     tree.refit_plan = plan_refit(tree, std::max(config.refit_grain, 1u));
     if (config.surface_patches) build_surface_patches(tree);
     const RefitStats fitted = refit(tree, triangles, vertices);

@@ -50,11 +50,13 @@ struct Aabb {
     friend bool operator==(const Aabb&, const Aabb&) = default;
 };
 
-/// True when the closed boxes share a point (touching counts).
+/// True when the closed boxes share a point (touching counts). All six comparisons, combined
+/// without branches: which axis separates two boxes is unpredictable, and the short-circuit
+/// form's mispredictions were most of the traversal's time (perf on data set C).
 inline bool overlaps(const Aabb& a, const Aabb& b) {
-    return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] &&  //
-           a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&  //
-           a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2];
+    return static_cast<bool>((a.lo[0] <= b.hi[0]) & (b.lo[0] <= a.hi[0]) &  //
+                             (a.lo[1] <= b.hi[1]) & (b.lo[1] <= a.hi[1]) &  //
+                             (a.lo[2] <= b.hi[2]) & (b.lo[2] <= a.hi[2]));
 }
 
 /// True when `inner` lies within the closed box `outer`.
@@ -145,6 +147,9 @@ struct Tree {
     /// triangles[triangle_ids[k]]): a copy, so refit and traversal stream them instead of
     /// gathering through triangle_ids (it halved refit's cache misses).
     std::vector<TriIndices> leaf_triangles;
+    /// Each triangle's box in leaf order, set with the node boxes by every refit: the leaf
+    /// tests read them in a row instead of gathering three vertices per triangle per test.
+    std::vector<Aabb> leaf_boxes;
     RefitPlan refit_plan;
     SurfacePatches patches;  ///< self-collision culling's per-node data (may be empty)
     double built_cost = 0;  ///< sah_cost right after the last build (quality reference)

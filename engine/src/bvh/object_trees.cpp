@@ -23,10 +23,18 @@ std::uint8_t bit(RebuildReason reason) { return static_cast<std::uint8_t>(reason
 ObjectTrees::ObjectTrees(const AabbConfig& config)
     : m_config(config), m_policy(config.policy) {}
 
-void ObjectTrees::begin_frame(std::size_t objects, std::span<const std::uint32_t> self) {
-    if (m_trees.size() < objects) m_trees.resize(objects);
+void ObjectTrees::begin_frame(const Frame& frame, std::span<const std::uint32_t> self) {
+    if (m_trees.size() < frame.objects.size()) m_trees.resize(frame.objects.size());
     for (ObjectTree& tree : m_trees) tree.fitted = tree.fresh = tree.self = false;
-    for (const std::uint32_t object : self) m_trees[object].self = true;
+    for (const std::uint32_t object : self) {
+        ObjectTree& slot = m_trees[object];
+        const Topology& topology = *frame.objects[object].topology;
+        if (slot.surface_revision != topology.revision) {
+            slot.surface = surface_like(topology.triangles);
+            slot.surface_revision = topology.revision;
+        }
+        slot.self = slot.surface;
+    }
 }
 
 BuildConfig ObjectTrees::build_config(std::uint32_t object) const {

@@ -24,7 +24,9 @@ struct ObjectTree {
     bool pending = false;   ///< a rebuild of it is in flight on the worker
     bool fitted = false;    ///< its boxes fit the current frame (built or refit this frame)
     bool fresh = false;     ///< built this frame (the policy leaves it alone)
-    bool self = false;      ///< tested against itself this frame: its tree carries surface patches
+    bool self = false;      ///< tested against itself this frame and surface-like: its tree carries surface patches
+    std::uint64_t surface_revision = ~std::uint64_t{0};  ///< the topology `surface` was measured on
+    bool surface = false;   ///< surface_like(its triangles), for surface_revision
 };
 
 /// The trees of every object, kept across frames. Engine thread only.
@@ -32,9 +34,9 @@ class ObjectTrees {
 public:
     explicit ObjectTrees(const AabbConfig& config);
 
-    /// Marks every tree unfitted for a new frame of `objects` objects, of which `self` are
-    /// tested against themselves (their trees get surface patches).
-    void begin_frame(std::size_t objects, std::span<const std::uint32_t> self);
+    /// Marks every tree unfitted for a new frame, of whose objects `self` are tested against
+    /// themselves (the surface-like ones' trees get surface patches).
+    void begin_frame(const Frame& frame, std::span<const std::uint32_t> self);
     /// Installs finished worker trees whose topology is still current (wait: block for them).
     void swap_finished(const Frame& frame, bool wait, AabbFrameInfo& info);
     /// Builds the trees of `used` objects that have none or whose topology changed.

@@ -107,6 +107,7 @@ double fit_subtree(Tree& tree, const RefitSubtree& subtree, std::span<const Vec3
     const std::uint32_t* leaf = plan.leaves.data() + subtree.leaf_begin;
     double cost = 0;
     std::uint8_t* sides = tree.patches.sides.data();
+    Aabb* boxes = tree.leaf_boxes.data();
     std::uint8_t leaf_sides = 0x3f;
     Bounds bounds = Bounds::empty();
     std::uint32_t count = 0;
@@ -114,7 +115,9 @@ double fit_subtree(Tree& tree, const RefitSubtree& subtree, std::span<const Vec3
         const TriIndices& ahead = tris[std::min(k + kPrefetchSlots, subtree.slot_end - 1)];
         for (const std::uint32_t v : ahead) __builtin_prefetch(vertices.data() + v);
         const Vec3 &a = vertices[tris[k][0]], &b = vertices[tris[k][1]], &c = vertices[tris[k][2]];
-        bounds.grow(Bounds::of(a, b, c));
+        const Bounds triangle = Bounds::of(a, b, c);
+        triangle.store(boxes[k]);
+        bounds.grow(triangle);
         if constexpr (kSides) leaf_sides &= triangle_sides(a, b, c);
         ++count;
         if (plan.leaf_ends[k]) {

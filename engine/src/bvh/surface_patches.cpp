@@ -137,6 +137,20 @@ void build_surface_patches(Tree& tree) {
     }
 }
 
+bool surface_like(std::span<const TriIndices> triangles) {
+    std::vector<std::uint64_t> keys;
+    keys.reserve(3 * triangles.size());
+    for (const TriIndices& t : triangles)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint64_t u = t[k], v = t[(k + 1) % 3];
+            keys.push_back(u < v ? (u << 32 | v) : (v << 32 | u));
+        }
+    std::sort(keys.begin(), keys.end());
+    std::size_t shared = 0;
+    for (std::size_t k = 1; k < keys.size(); ++k) shared += keys[k] == keys[k - 1];
+    return 2 * shared >= triangles.size();
+}
+
 std::uint8_t triangle_sides(const Vec3& a, const Vec3& b, const Vec3& c) {
     std::uint8_t bits = 0;
     for (int k = 0; k < 3; ++k) {

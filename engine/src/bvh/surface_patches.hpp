@@ -28,6 +28,12 @@ namespace collidescope::bvh {
 /// edges for t triangles), gets no loop, and neither do its ancestors then.
 void build_surface_patches(Tree& tree);
 
+/// True when the triangles form a surface worth patches: at least one edge shared by two
+/// triangles per two triangles (a grid sheet has about three per two; a closed mesh three; a
+/// triangle soup, such as data set E's fragments, none, and patches would only cost).
+/// O(n log n); callers keep the answer per topology.
+bool surface_like(std::span<const TriIndices> triangles);
+
 /// SurfacePatches::sides bits of the triangle (a, b, c): the projected orientations that
 /// orient2d's floating-point filter certifies. An orientation the filter leaves open (zero,
 /// or nearly: the triangle is edge-on or nearly so to that axis) sets no bit, which can only

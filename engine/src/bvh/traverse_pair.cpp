@@ -1,31 +1,28 @@
 // Tree-vs-tree traversal step: simultaneous descent, splitting the node with the larger
-// surface (a leaf is never split); leaves meet triangle by triangle on closed boxes.
+// surface (a leaf is never split); leaves meet triangle by triangle on closed boxes (the
+// refit's Tree::leaf_boxes). A split
+// tests each child pair's boxes before pushing it, so pairs that do not overlap never reach
+// the stack (a popped pair is tested again, its boxes in cache: roots arrive untested).
 
 #include "bvh/traverse.hpp"
 
 namespace collidescope::bvh {
 namespace {
 
-constexpr std::uint32_t k_cached = 8;  // triangle boxes of leaf B kept on the stack
-
 void leaf_pair(const WorkItem& item, const MeshView& a, const Node& leaf_a, const MeshView& b,
                const Node& leaf_b, std::vector<TrianglePair>& candidates, TraversalStats& stats) {
     const std::uint32_t* ids_a = a.tree->triangle_ids.data() + leaf_a.index;
     const std::uint32_t* ids_b = b.tree->triangle_ids.data() + leaf_b.index;
-    const TriIndices* tris_a = a.tree->leaf_triangles.data() + leaf_a.index;
-    const TriIndices* tris_b = b.tree->leaf_triangles.data() + leaf_b.index;
-    std::array<Aabb, k_cached> boxes_b;
-    const bool cached = leaf_b.count <= k_cached;
-    for (std::uint32_t j = 0; cached && j < leaf_b.count; ++j) boxes_b[j] = triangle_box(tris_b[j], b.vertices);
+    const Aabb* boxes_a = a.tree->leaf_boxes.data() + leaf_a.index;
+    const Aabb* boxes_b = b.tree->leaf_boxes.data() + leaf_b.index;
     const bool same_object = item.obj_a == item.obj_b;
     const bool masked = !a.alive_triangles.empty() || !b.alive_triangles.empty();
     for (std::uint32_t i = 0; i < leaf_a.count; ++i) {
         if (masked && !a.alive_triangles.empty() && !a.alive_triangles[ids_a[i]]) continue;
-        const Aabb box_a = triangle_box(tris_a[i], a.vertices);
+        const Aabb& box_a = boxes_a[i];
         for (std::uint32_t j = 0; j < leaf_b.count; ++j) {
             if (masked && !b.alive_triangles.empty() && !b.alive_triangles[ids_b[j]]) continue;
-            const Aabb box_b = cached ? boxes_b[j] : triangle_box(tris_b[j], b.vertices);
-            if (!overlaps(box_a, box_b)) continue;
+            if (!overlaps(box_a, boxes_b[j])) continue;
             candidates.push_back(same_object ? make_pair_ordered(item.obj_a, ids_a[i], item.obj_b, ids_b[j])
                                              : TrianglePair{item.obj_a, ids_a[i], item.obj_b, ids_b[j]});
         }
@@ -55,12 +52,17 @@ void step_pair(const WorkItem& item, std::span<const MeshView> meshes, std::vect
         return;
     }
     const bool split_a = !x.is_leaf() && (y.is_leaf() || x.box.half_area() >= y.box.half_area());
+    const auto push_if_overlapping = [&](std::uint32_t node_a, std::uint32_t node_b) {
+        ++stats.box_tests;
+        if (overlaps(a.tree->nodes[node_a].box, b.tree->nodes[node_b].box))
+            stack.push_back({item.obj_a, item.obj_b, node_a, node_b});
+    };
     if (split_a) {
-        stack.push_back({item.obj_a, item.obj_b, item.node_a + 1, item.node_b});
-        stack.push_back({item.obj_a, item.obj_b, x.index, item.node_b});
+        push_if_overlapping(item.node_a + 1, item.node_b);
+        push_if_overlapping(x.index, item.node_b);
     } else {
-        stack.push_back({item.obj_a, item.obj_b, item.node_a, item.node_b + 1});
-        stack.push_back({item.obj_a, item.obj_b, item.node_a, y.index});
+        push_if_overlapping(item.node_a, item.node_b + 1);
+        push_if_overlapping(item.node_a, y.index);
     }
 }
 

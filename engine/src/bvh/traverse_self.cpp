@@ -14,12 +14,11 @@ namespace {
 void leaf_self(const WorkItem& item, const MeshView& mesh, const Node& leaf,
                std::vector<TrianglePair>& candidates, TraversalStats& stats) {
     const std::uint32_t* ids = mesh.tree->triangle_ids.data() + leaf.index;
-    const TriIndices* tris = mesh.tree->leaf_triangles.data() + leaf.index;
+    const Aabb* boxes = mesh.tree->leaf_boxes.data() + leaf.index;
     for (std::uint32_t i = 0; i < leaf.count; ++i) {
-        const Aabb box_i = triangle_box(tris[i], mesh.vertices);
         for (std::uint32_t j = i + 1; j < leaf.count; ++j) {
             ++stats.box_tests;
-            if (!overlaps(box_i, triangle_box(tris[j], mesh.vertices))) continue;
+            if (!overlaps(boxes[i], boxes[j])) continue;
             candidates.push_back(make_pair_ordered(item.obj_a, ids[i], item.obj_a, ids[j]));
             ++stats.candidate_pairs;
         }

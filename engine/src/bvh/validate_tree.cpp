@@ -98,6 +98,11 @@ private:
                 fail("leaf_triangles[" + std::to_string(k) + "] is not triangle " + std::to_string(tri));
             }
             const Aabb box = triangle_box(m_triangles, m_vertices, tri);
+            // The traversal's leaf tests read the stored box: it must be the triangle's own
+            // (a stale one could drop a pair), exactly.
+            if (k >= m_tree.leaf_boxes.size() || !(m_tree.leaf_boxes[k] == box)) {
+                fail("leaf_boxes[" + std::to_string(k) + "] is not the box of triangle " + std::to_string(tri));
+            }
             fitted.grow(box);
             if (!contains(node.box, box)) {
                 fail("leaf " + std::to_string(index) + ": triangle " + std::to_string(tri) + " sticks out of its box");
