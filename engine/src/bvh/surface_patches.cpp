@@ -12,6 +12,9 @@
 #include "geometry/orient2d_filter.hpp"
 #include "geometry/simple_loop.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -109,6 +112,30 @@ std::size_t max_loop(std::uint32_t triangles) {
 
 }  // namespace
 
+namespace {
+
+/// Fits node i from its children's chains (already fitted) or its leaf, and records its loop
+/// into `loops` (offsets relative to that vector).
+void fit_patch(const Tree& tree, std::size_t i, std::vector<Chain>& chains, SurfacePatches& p,
+               std::vector<std::uint32_t>& loops) {
+    const Node& node = tree.nodes[i];
+    if (node.is_leaf()) {
+        p.triangles[i] = node.count;
+        chains[i] = leaf_chain(tree.leaf_triangles.data() + node.index, node.count);
+    } else {
+        p.triangles[i] = p.triangles[i + 1] + p.triangles[node.index];
+        chains[i] = merged(chains[i + 1], chains[node.index]);
+        chains[i + 1] = Chain{};
+        chains[node.index] = Chain{};
+    }
+    if (chains[i].valid && chains[i].edges.size() > max_loop(p.triangles[i])) chains[i] = Chain{};
+    if (!chains[i].valid) return;
+    p.loop_begin[i] = static_cast<std::uint32_t>(loops.size());
+    p.loop_size[i] = append_loop(chains[i].edges, loops);
+}
+
+}  // namespace
+
 void build_surface_patches(Tree& tree) {
     SurfacePatches& p = tree.patches;
     const std::size_t n = tree.nodes.size();
@@ -117,23 +144,30 @@ void build_surface_patches(Tree& tree) {
     p.loop_size.assign(n, 0);
     p.triangles.assign(n, 0);
     p.sides.assign(n, 0);
-    // Reverse preorder visits children before parents; a chain lives until its parent merges it.
+    // The refit plan's subtrees in parallel, then its top nodes; within each, reverse preorder
+    // visits children before parents, and a chain lives until its parent merges it. Loops go
+    // to one vector per part, joined in plan order (deterministic), offsets shifted.
+    const RefitPlan& plan = tree.refit_plan;
     std::vector<Chain> chains(n);
-    for (std::size_t i = n; i-- > 0;) {
-        const Node& node = tree.nodes[i];
-        if (node.is_leaf()) {
-            p.triangles[i] = node.count;
-            chains[i] = leaf_chain(tree.leaf_triangles.data() + node.index, node.count);
-        } else {
-            p.triangles[i] = p.triangles[i + 1] + p.triangles[node.index];
-            chains[i] = merged(chains[i + 1], chains[node.index]);
-            chains[i + 1] = Chain{};
-            chains[node.index] = Chain{};
+    std::vector<std::vector<std::uint32_t>> parts(plan.subtrees.size() + 1);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, plan.subtrees.size(), 1),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t s = range.begin(); s != range.end(); ++s) {
+            const NodeRange nodes = plan.subtrees[s].nodes;
+            for (std::size_t i = nodes.end; i-- > nodes.root;) fit_patch(tree, i, chains, p, parts[s]);
         }
-        if (chains[i].valid && chains[i].edges.size() > max_loop(p.triangles[i])) chains[i] = Chain{};
-        if (!chains[i].valid) continue;
-        p.loop_begin[i] = static_cast<std::uint32_t>(p.loop_vertices.size());
-        p.loop_size[i] = append_loop(chains[i].edges, p.loop_vertices);
+    });
+    for (std::size_t k = plan.top.size(); k-- > 0;) fit_patch(tree, plan.top[k], chains, p, parts.back());
+    for (std::size_t s = 0; s < parts.size(); ++s) {
+        const auto offset = static_cast<std::uint32_t>(p.loop_vertices.size());
+        if (s < plan.subtrees.size()) {
+            for (std::uint32_t i = plan.subtrees[s].nodes.root; i < plan.subtrees[s].nodes.end; ++i)
+                if (p.loop_size[i] != 0) p.loop_begin[i] += offset;
+        } else {
+            for (const std::uint32_t i : plan.top)
+                if (p.loop_size[i] != 0) p.loop_begin[i] += offset;
+        }
+        p.loop_vertices.insert(p.loop_vertices.end(), parts[s].begin(), parts[s].end());
     }
 }
 
