@@ -3,6 +3,7 @@
 #include "gpucull/final_hierarchy.hpp"
 
 #include "bvh/bvh.hpp"
+#include "bvh/surface_patches.hpp"
 #include "bvh/traverse.hpp"
 
 #include <algorithm>
@@ -25,7 +26,11 @@ void fill_subset(const ObjectFrame& object, const std::vector<std::uint32_t>* su
         for (std::uint32_t i = 0; i < subset.ids.size(); ++i) subset.ids[i] = i;
     }
     for (const std::uint32_t id : subset.ids) subset.triangles.push_back(object.topology->triangles[id]);
-    if (!subset.triangles.empty()) bvh::build_tree(subset.triangles, object.vertices, bvh::BuildConfig{}, subset.tree);
+    bvh::BuildConfig config;
+    // A whole object tested against itself: its surface patches let the self-traversal skip
+    // what is proven embedded (a soup has none worth building).
+    config.surface_patches = survivors == nullptr && bvh::surface_like(subset.triangles);
+    if (!subset.triangles.empty()) bvh::build_tree(subset.triangles, object.vertices, config, subset.tree);
 }
 
 }  // namespace
@@ -72,6 +77,7 @@ std::vector<TrianglePair> final_step_candidates(const FrameContext& context, con
     }
     stats.nodes_visited = traversal.nodes_visited;
     stats.box_tests = traversal.box_tests;
+    stats.self_culled_triangles = traversal.self_culled_triangles;
     return candidates;
 }
 

@@ -3,7 +3,8 @@
 // object's surviving triangles get a fresh hierarchy (the Mode 1 builder), and a traversal of
 // the object pairs gives candidate pairs for the exact test. Self-collision pairs within one
 // object skip the GPU (the cull is inter-object), so a self-colliding object's hierarchy holds
-// all its triangles for its self-traversal.
+// all its triangles for its self-traversal, with surface patches when the object is a surface
+// (Mode 1's self-collision culling, bvh/surface_patches.hpp).
 
 #include "gpucull/image_space_cull.hpp"
 
@@ -17,6 +18,7 @@ namespace collidescope::gpucull {
 struct FinalStepStats {
     std::uint64_t nodes_visited = 0;
     std::uint64_t box_tests = 0;
+    std::uint64_t self_culled_triangles = 0;
 };
 
 /// Candidate pairs (canonical, triangle ids of the file) among the survivors `pcs` of every

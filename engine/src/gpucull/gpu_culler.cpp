@@ -85,6 +85,7 @@ std::vector<TrianglePair> GpuCuller::cull(const FrameContext& context, FrameStat
     stats.ms.cull += times.render + times.readback + stats.ms.final_hierarchy;
     stats.counts.box_tests += final_stats.box_tests;
     stats.counts.nodes_visited += final_stats.nodes_visited;
+    stats.counts.self_culled_triangles += final_stats.self_culled_triangles;
     stats.counts.candidate_pairs += candidates.size();
     learn(plan, info, times, stats.ms.final_hierarchy);
     stats.gpu = std::move(info);
