@@ -9,6 +9,7 @@
 //
 //   build/bench/bench_self_cull [--benchmark_repetitions=5]
 //
+// BM_build_*: a build with and without the patches.
 // Counters: refit_ms, self_ms (refit with patches + traversal + narrow), self_over_refit
 // (self_ms / refit_ms), culled (triangles below nodes proven embedded), candidates, colliding.
 
@@ -95,6 +96,33 @@ void run_self(benchmark::State& state, const std::string& spec) {
     state.counters["candidates"] = static_cast<double>(candidates) / n;
     state.counters["colliding"] = static_cast<double>(colliding) / n;
 }
+
+// A build with and without surface patches (what a policy rebuild of a self-colliding object
+// costs beyond the tree itself). Counters: plain_ms, patches_ms, patches_over_plain.
+void run_build(benchmark::State& state, const std::string& spec) {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(state.range(0)));
+    const SceneFrames& mesh = scene_frames(spec);
+    bvh::BuildConfig with_patches;
+    with_patches.surface_patches = true;
+    double plain_ms = 0, patches_ms = 0;
+    for (auto _ : state) {
+        bvh::Tree tree;
+        Clock::time_point start = Clock::now();
+        bvh::build_tree(mesh.triangles, mesh.frames[0], bvh::BuildConfig{}, tree);
+        plain_ms += ms_since(start);
+        start = Clock::now();
+        bvh::build_tree(mesh.triangles, mesh.frames[0], with_patches, tree);
+        patches_ms += ms_since(start);
+        benchmark::DoNotOptimize(tree.nodes.data());
+    }
+    const double n = static_cast<double>(state.iterations());
+    state.counters["plain_ms"] = plain_ms / n;
+    state.counters["patches_ms"] = patches_ms / n;
+    state.counters["patches_over_plain"] = patches_ms / plain_ms;
+}
+
+void BM_build_cloth_drape_large(benchmark::State& state) { run_build(state, "cloth-drape:large"); }
+BENCHMARK(BM_build_cloth_drape_large)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 void BM_self_cloth_rest_large(benchmark::State& state) { run_self(state, "cloth-rest:large"); }
 void BM_self_cloth_drape_large(benchmark::State& state) { run_self(state, "cloth-drape:large"); }

@@ -9,7 +9,6 @@
 #include "bvh/surface_patches.hpp"
 
 #include "collidescope/geometry.hpp"
-#include "geometry/orient2d_filter.hpp"
 #include "geometry/simple_loop.hpp"
 
 #include <tbb/blocked_range.h>
@@ -49,8 +48,8 @@ bool push(std::vector<ChainEdge>& out, const ChainEdge& edge) {
 
 Chain leaf_chain(const TriIndices* tris, std::uint32_t count) {
     Chain chain;
-    std::vector<ChainEdge> raw;
-    raw.reserve(3 * count);
+    thread_local std::vector<ChainEdge> raw;  // scratch: no allocation per leaf
+    raw.clear();
     for (std::uint32_t t = 0; t < count; ++t) {
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t u = tris[t][k], v = tris[t][(k + 1) % 3];
@@ -79,32 +78,43 @@ Chain merged(const Chain& a, const Chain& b) {
 }
 
 /// Appends the chain's loop to `out` when the chain is exactly one closed loop through
-/// distinct vertices; returns its length, or 0.
+/// distinct vertices; returns its length, or 0. With the edges sorted by source (S) and by
+/// destination (D), one loop means every vertex is the source of one edge and the destination
+/// of one, so the k-th smallest source equals the k-th smallest destination; the edge after
+/// S[i] then is S[k] where D[k] is S[i]: a walk without searching.
 std::uint32_t append_loop(const std::vector<ChainEdge>& edges, std::vector<std::uint32_t>& out) {
     const std::size_t m = edges.size();
     if (m < 3) return 0;
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> next;  // (from, to)
-    next.reserve(m);
-    for (const ChainEdge& e : edges) next.emplace_back(e.coef > 0 ? e.lo : e.hi, e.coef > 0 ? e.hi : e.lo);
-    std::sort(next.begin(), next.end());
-    for (std::size_t k = 1; k < m; ++k)
-        if (next[k].first == next[k - 1].first) return 0;  // a vertex with two edges out
+    thread_local std::vector<std::pair<std::uint32_t, std::uint32_t>> by_source;  // (from, to); scratch
+    thread_local std::vector<std::pair<std::uint32_t, std::uint32_t>> by_target;  // (to, index in by_source)
+    thread_local std::vector<std::uint32_t> after;                               // index in by_source -> next
+    by_source.clear();
+    for (const ChainEdge& e : edges) by_source.emplace_back(e.coef > 0 ? e.lo : e.hi, e.coef > 0 ? e.hi : e.lo);
+    std::sort(by_source.begin(), by_source.end());
+    by_target.clear();
+    for (std::uint32_t i = 0; i < m; ++i) by_target.emplace_back(by_source[i].second, i);
+    std::sort(by_target.begin(), by_target.end());
+    after.resize(m);
+    for (std::size_t k = 0; k < m; ++k) {
+        if (by_source[k].first != by_target[k].first) return 0;  // a vertex with two edges out or in
+        if (k > 0 && by_source[k].first == by_source[k - 1].first) return 0;
+        after[by_target[k].second] = static_cast<std::uint32_t>(k);
+    }
     const std::size_t begin = out.size();
-    const std::uint32_t start = next[0].first;
-    std::uint32_t at = start;
+    std::uint32_t at = 0;
     for (std::size_t step = 0; step < m; ++step) {
-        out.push_back(at);
-        const auto it = std::lower_bound(next.begin(), next.end(), std::make_pair(at, std::uint32_t{0}));
-        if (it == next.end() || it->first != at) break;
-        at = it->second;
-        if (at == start) {
-            if (step + 1 == m) return static_cast<std::uint32_t>(m);
-            break;  // closed early: more than one loop
+        out.push_back(by_source[at].first);
+        at = after[at];
+        if (at == 0 && step + 1 < m) {  // closed early: more than one loop
+            out.resize(begin);
+            return 0;
         }
     }
-    out.resize(begin);
-    return 0;
+    return static_cast<std::uint32_t>(m);
 }
+
+/// A lone triangle has no pairs: it keeps no loop.
+constexpr std::uint32_t kMinPatch = 2;
 
 std::size_t max_loop(std::uint32_t triangles) {
     return 16 + static_cast<std::size_t>(8.0 * std::sqrt(static_cast<double>(triangles)));
@@ -129,7 +139,7 @@ void fit_patch(const Tree& tree, std::size_t i, std::vector<Chain>& chains, Surf
         chains[node.index] = Chain{};
     }
     if (chains[i].valid && chains[i].edges.size() > max_loop(p.triangles[i])) chains[i] = Chain{};
-    if (!chains[i].valid) return;
+    if (!chains[i].valid || p.triangles[i] < kMinPatch) return;
     p.loop_begin[i] = static_cast<std::uint32_t>(loops.size());
     p.loop_size[i] = append_loop(chains[i].edges, loops);
 }
@@ -183,16 +193,6 @@ bool surface_like(std::span<const TriIndices> triangles) {
     std::size_t shared = 0;
     for (std::size_t k = 1; k < keys.size(); ++k) shared += keys[k] == keys[k - 1];
     return 2 * shared >= triangles.size();
-}
-
-std::uint8_t triangle_sides(const Vec3& a, const Vec3& b, const Vec3& c) {
-    std::uint8_t bits = 0;
-    for (int k = 0; k < 3; ++k) {
-        const int sign = filter::orient2d_filtered(a, b, c, k);
-        if (sign > 0) bits |= static_cast<std::uint8_t>(1u << (2 * k));
-        if (sign < 0) bits |= static_cast<std::uint8_t>(2u << (2 * k));
-    }
-    return bits;
 }
 
 bool patch_is_embedded(const Tree& tree, std::uint32_t node, std::span<const Vec3> vertices) {

@@ -16,6 +16,7 @@
 // triangles of P meet outside their shared vertices' hull, and no two vertices coincide.
 
 #include "bvh/bvh.hpp"
+#include "geometry/orient2d_filter.hpp"
 
 #include <cstdint>
 #include <span>
@@ -39,7 +40,15 @@ bool surface_like(std::span<const TriIndices> triangles);
 /// or nearly: the triangle is edge-on or nearly so to that axis) sets no bit, which can only
 /// keep a node from being culled. A flat cloth's exact zeros would otherwise cost two exact
 /// evaluations per triangle per frame.
-std::uint8_t triangle_sides(const Vec3& a, const Vec3& b, const Vec3& c);
+inline std::uint8_t triangle_sides(const Vec3& a, const Vec3& b, const Vec3& c) {
+    std::uint8_t bits = 0;
+    for (int k = 0; k < 3; ++k) {
+        const int sign = filter::orient2d_filtered(a, b, c, k);
+        if (sign > 0) bits |= static_cast<std::uint8_t>(1u << (2 * k));
+        if (sign < 0) bits |= static_cast<std::uint8_t>(2u << (2 * k));
+    }
+    return bits;
+}
 
 /// True when the triangles below `node` are proven embedded for `vertices` (the positions
 /// the tree was last fitted to): conditions 1 to 3 above. Requires non-empty patches.
