@@ -15,6 +15,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <span>
 #include <cmath>
 
 namespace collidescope::bvh {
@@ -46,24 +47,6 @@ bool push(std::vector<ChainEdge>& out, const ChainEdge& edge) {
     return true;
 }
 
-Chain leaf_chain(const TriIndices* tris, std::uint32_t count) {
-    Chain chain;
-    thread_local std::vector<ChainEdge> raw;  // scratch: no allocation per leaf
-    raw.clear();
-    for (std::uint32_t t = 0; t < count; ++t) {
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t u = tris[t][k], v = tris[t][(k + 1) % 3];
-            if (u == v) return chain;  // a degenerate triangle: no loop here or above
-            raw.push_back(u < v ? ChainEdge{u, v, 1} : ChainEdge{v, u, -1});
-        }
-    }
-    std::sort(raw.begin(), raw.end(), key_less);
-    for (const ChainEdge& edge : raw)
-        if (!push(chain.edges, edge)) return Chain{};
-    chain.valid = true;
-    return chain;
-}
-
 Chain merged(const Chain& a, const Chain& b) {
     Chain chain;
     if (!a.valid || !b.valid) return chain;
@@ -82,7 +65,7 @@ Chain merged(const Chain& a, const Chain& b) {
 /// destination (D), one loop means every vertex is the source of one edge and the destination
 /// of one, so the k-th smallest source equals the k-th smallest destination; the edge after
 /// S[i] then is S[k] where D[k] is S[i]: a walk without searching.
-std::uint32_t append_loop(const std::vector<ChainEdge>& edges, std::vector<std::uint32_t>& out) {
+std::uint32_t append_loop(std::span<const ChainEdge> edges, std::vector<std::uint32_t>& out) {
     const std::size_t m = edges.size();
     if (m < 3) return 0;
     thread_local std::vector<std::pair<std::uint32_t, std::uint32_t>> by_source;  // (from, to); scratch
@@ -124,24 +107,97 @@ std::size_t max_loop(std::uint32_t triangles) {
 
 namespace {
 
-/// Fits node i from its children's chains (already fitted) or its leaf, and records its loop
-/// into `loops` (offsets relative to that vector).
-void fit_patch(const Tree& tree, std::size_t i, std::vector<Chain>& chains, SurfacePatches& p,
-               std::vector<std::uint32_t>& loops) {
-    const Node& node = tree.nodes[i];
-    if (node.is_leaf()) {
-        p.triangles[i] = node.count;
-        chains[i] = leaf_chain(tree.leaf_triangles.data() + node.index, node.count);
-    } else {
-        p.triangles[i] = p.triangles[i + 1] + p.triangles[node.index];
-        chains[i] = merged(chains[i + 1], chains[node.index]);
-        chains[i + 1] = Chain{};
-        chains[node.index] = Chain{};
-    }
-    if (chains[i].valid && chains[i].edges.size() > max_loop(p.triangles[i])) chains[i] = Chain{};
-    if (!chains[i].valid || p.triangles[i] < kMinPatch) return;
+/// Records the loop of node i, whose chain `edges` was just fitted (valid), into `loops`
+/// (offsets relative to that vector); false when the chain is too long to keep.
+bool record_loop(std::size_t i, std::span<const ChainEdge> edges, SurfacePatches& p, std::vector<std::uint32_t>& loops) {
+    if (edges.size() > max_loop(p.triangles[i])) return false;
+    if (p.triangles[i] < kMinPatch) return true;
     p.loop_begin[i] = static_cast<std::uint32_t>(loops.size());
-    p.loop_size[i] = append_loop(chains[i].edges, loops);
+    p.loop_size[i] = append_loop(edges, loops);
+    return true;
+}
+
+/// A top node (above the refit plan's subtrees): from its children's chains.
+void fit_top_patch(const Tree& tree, std::size_t i, std::vector<Chain>& chains, SurfacePatches& p,
+                   std::vector<std::uint32_t>& loops) {
+    const Node& node = tree.nodes[i];
+    p.triangles[i] = p.triangles[i + 1] + p.triangles[node.index];
+    chains[i] = merged(chains[i + 1], chains[node.index]);
+    chains[i + 1] = Chain{};
+    chains[node.index] = Chain{};
+    if (chains[i].valid && !record_loop(i, chains[i].edges, p, loops)) chains[i] = Chain{};
+}
+
+/// One refit subtree, children before parents (reverse preorder), with every chain in one
+/// buffer used as a stack: reverse preorder finishes an inner node's left child last and its
+/// right child just before the left subtree, so a node's two children are the two records on
+/// top. No allocation per node (a vector per chain made the patches cost 3x the build).
+/// Returns the subtree root's chain (the top nodes merge it).
+Chain fit_subtree_patches(const Tree& tree, NodeRange nodes, SurfacePatches& p, std::vector<std::uint32_t>& loops) {
+    struct Record {
+        std::size_t begin;
+        bool valid;
+    };
+    thread_local std::vector<ChainEdge> stack;
+    thread_local std::vector<Record> records;
+    stack.clear();
+    records.clear();
+    for (std::size_t i = nodes.end; i-- > nodes.root;) {
+        const Node& node = tree.nodes[i];
+        Record record{stack.size(), true};
+        if (node.is_leaf()) {
+            p.triangles[i] = node.count;
+            const TriIndices* tris = tree.leaf_triangles.data() + node.index;
+            for (std::uint32_t t = 0; t < node.count && record.valid; ++t)
+                for (int k = 0; k < 3; ++k) {
+                    const std::uint32_t u = tris[t][k], v = tris[t][(k + 1) % 3];
+                    record.valid = record.valid && u != v;  // a degenerate triangle: no loop here or above
+                    stack.push_back(u < v ? ChainEdge{u, v, 1} : ChainEdge{v, u, -1});
+                }
+            std::sort(stack.begin() + static_cast<std::ptrdiff_t>(record.begin), stack.end(), key_less);
+        } else {
+            const Record left = records.back();
+            records.pop_back();
+            const Record right = records.back();
+            records.pop_back();
+            p.triangles[i] = p.triangles[i + 1] + p.triangles[node.index];
+            record = {right.begin, left.valid && right.valid};
+            if (record.valid) {  // merge [right.begin, left.begin) and [left.begin, end) behind the end
+                const std::size_t end = stack.size();
+                stack.reserve(end + (end - right.begin));
+                std::size_t a = right.begin, b = left.begin;
+                while (a < left.begin || b < end) {
+                    const bool take_a = b == end || (a < left.begin && !key_less(stack[b], stack[a]));
+                    stack.push_back(stack[take_a ? a++ : b++]);
+                }
+                std::copy(stack.begin() + static_cast<std::ptrdiff_t>(end), stack.end(),
+                          stack.begin() + static_cast<std::ptrdiff_t>(right.begin));
+                stack.resize(right.begin + (stack.size() - end));
+            }
+        }
+        // Sum equal keys in place (sorted): coefficients outside {-1, 0, 1} end the chain.
+        std::size_t write = record.begin;
+        for (std::size_t r = record.begin; record.valid && r < stack.size(); ++r) {
+            if (write > record.begin && same_key(stack[write - 1], stack[r])) {
+                stack[write - 1].coef += stack[r].coef;
+                if (stack[write - 1].coef == 0) --write;
+                else if (std::abs(stack[write - 1].coef) > 1) record.valid = false;
+            } else {
+                stack[write++] = stack[r];
+            }
+        }
+        stack.resize(record.valid ? write : record.begin);
+        const std::span<const ChainEdge> edges(stack.data() + record.begin, stack.size() - record.begin);
+        if (record.valid && !record_loop(i, edges, p, loops)) {
+            record.valid = false;
+            stack.resize(record.begin);
+        }
+        records.push_back(record);
+    }
+    Chain root;
+    root.valid = records.back().valid;
+    root.edges.assign(stack.begin() + static_cast<std::ptrdiff_t>(records.back().begin), stack.end());
+    return root;
 }
 
 }  // namespace
@@ -154,8 +210,7 @@ void build_surface_patches(Tree& tree) {
     p.loop_size.assign(n, 0);
     p.triangles.assign(n, 0);
     p.sides.assign(n, 0);
-    // The refit plan's subtrees in parallel, then its top nodes; within each, reverse preorder
-    // visits children before parents, and a chain lives until its parent merges it. Loops go
+    // The refit plan's subtrees in parallel (fit_subtree_patches), then its top nodes; loops go
     // to one vector per part, joined in plan order (deterministic), offsets shifted.
     const RefitPlan& plan = tree.refit_plan;
     std::vector<Chain> chains(n);
@@ -164,10 +219,10 @@ void build_surface_patches(Tree& tree) {
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t s = range.begin(); s != range.end(); ++s) {
             const NodeRange nodes = plan.subtrees[s].nodes;
-            for (std::size_t i = nodes.end; i-- > nodes.root;) fit_patch(tree, i, chains, p, parts[s]);
+            chains[nodes.root] = fit_subtree_patches(tree, nodes, p, parts[s]);
         }
     });
-    for (std::size_t k = plan.top.size(); k-- > 0;) fit_patch(tree, plan.top[k], chains, p, parts.back());
+    for (std::size_t k = plan.top.size(); k-- > 0;) fit_top_patch(tree, plan.top[k], chains, p, parts.back());
     for (std::size_t s = 0; s < parts.size(); ++s) {
         const auto offset = static_cast<std::uint32_t>(p.loop_vertices.size());
         if (s < plan.subtrees.size()) {
