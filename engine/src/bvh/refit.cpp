@@ -74,10 +74,12 @@ struct Bounds {
 };
 
 // Fits an inner node from its children (already fitted), with one store, and returns its
-// node_cost from the registers. With patches, its sides are its children's common sides.
+// node_cost from the registers. kSides (the tree has patches): its sides are its children's
+// common sides.
+template <bool kSides>
 double fit_inner(Tree& tree, std::uint32_t index) {
     Node& node = tree.nodes[index];
-    if (!tree.patches.empty()) {
+    if constexpr (kSides) {
         std::vector<std::uint8_t>& sides = tree.patches.sides;
         sides[index] = sides[index + 1] & sides[node.index];
     }
@@ -132,7 +134,7 @@ double fit_subtree(Tree& tree, const RefitSubtree& subtree, std::span<const Vec3
         }
     }
     for (std::uint32_t j = subtree.inner_end; j-- > subtree.inner_begin;) {
-        cost += fit_inner(tree, plan.inner[j]);
+        cost += fit_inner<kSides>(tree, plan.inner[j]);
     }
     return cost;
 }
@@ -168,7 +170,7 @@ RefitStats refit(Tree& tree, std::span<const TriIndices> triangles, std::span<co
     double cost = 0;
     for (const double c : subtree_cost) cost += c;
     for (std::size_t k = plan.top.size(); k-- > 0;) {
-        cost += fit_inner(tree, plan.top[k]);
+        cost += with_sides ? fit_inner<true>(tree, plan.top[k]) : fit_inner<false>(tree, plan.top[k]);
     }
     stats.nodes = static_cast<std::uint32_t>(tree.nodes.size());
     stats.sah_cost = normalise(tree, cost);

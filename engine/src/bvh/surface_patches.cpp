@@ -34,29 +34,30 @@ struct Chain {
     bool valid = false;
 };
 
-/// Appends `edge` to the sorted `out`, adding it to an equal last key; false when a
-/// coefficient would leave {-1, 0, 1}.
-bool push(std::vector<ChainEdge>& out, const ChainEdge& edge) {
-    if (!out.empty() && same_key(out.back(), edge)) {
-        out.back().coef += edge.coef;
-        if (out.back().coef == 0) out.pop_back();
-        else if (std::abs(out.back().coef) > 1) return false;
-        return true;
+/// Sums the edges of edges[begin..) with equal keys, in place (they are sorted), dropping
+/// zeros and truncating the vector; false when a coefficient leaves {-1, 0, 1}.
+bool coalesce(std::vector<ChainEdge>& edges, std::size_t begin) {
+    std::size_t write = begin;
+    for (std::size_t r = begin; r < edges.size(); ++r) {
+        if (write > begin && same_key(edges[write - 1], edges[r])) {
+            edges[write - 1].coef += edges[r].coef;
+            if (edges[write - 1].coef == 0) --write;
+            else if (std::abs(edges[write - 1].coef) > 1) return false;
+        } else {
+            edges[write++] = edges[r];
+        }
     }
-    out.push_back(edge);
+    edges.resize(write);
     return true;
 }
 
+/// The sum of two chains (each sorted and coalesced).
 Chain merged(const Chain& a, const Chain& b) {
     Chain chain;
     if (!a.valid || !b.valid) return chain;
-    chain.edges.reserve(a.edges.size() + b.edges.size());
-    std::size_t i = 0, j = 0;
-    while (i < a.edges.size() || j < b.edges.size()) {
-        const bool take_a = j == b.edges.size() || (i < a.edges.size() && !key_less(b.edges[j], a.edges[i]));
-        if (!push(chain.edges, take_a ? a.edges[i++] : b.edges[j++])) return Chain{};
-    }
-    chain.valid = true;
+    chain.edges.resize(a.edges.size() + b.edges.size());
+    std::merge(a.edges.begin(), a.edges.end(), b.edges.begin(), b.edges.end(), chain.edges.begin(), key_less);
+    chain.valid = coalesce(chain.edges, 0);
     return chain;
 }
 
@@ -162,31 +163,13 @@ Chain fit_subtree_patches(const Tree& tree, NodeRange nodes, SurfacePatches& p, 
             records.pop_back();
             p.triangles[i] = p.triangles[i + 1] + p.triangles[node.index];
             record = {right.begin, left.valid && right.valid};
-            if (record.valid) {  // merge [right.begin, left.begin) and [left.begin, end) behind the end
-                const std::size_t end = stack.size();
-                stack.reserve(end + (end - right.begin));
-                std::size_t a = right.begin, b = left.begin;
-                while (a < left.begin || b < end) {
-                    const bool take_a = b == end || (a < left.begin && !key_less(stack[b], stack[a]));
-                    stack.push_back(stack[take_a ? a++ : b++]);
-                }
-                std::copy(stack.begin() + static_cast<std::ptrdiff_t>(end), stack.end(),
-                          stack.begin() + static_cast<std::ptrdiff_t>(right.begin));
-                stack.resize(right.begin + (stack.size() - end));
-            }
+            // The two records are adjacent and sorted: merge them where they lie.
+            if (record.valid)
+                std::inplace_merge(stack.begin() + static_cast<std::ptrdiff_t>(right.begin),
+                                   stack.begin() + static_cast<std::ptrdiff_t>(left.begin), stack.end(), key_less);
         }
-        // Sum equal keys in place (sorted): coefficients outside {-1, 0, 1} end the chain.
-        std::size_t write = record.begin;
-        for (std::size_t r = record.begin; record.valid && r < stack.size(); ++r) {
-            if (write > record.begin && same_key(stack[write - 1], stack[r])) {
-                stack[write - 1].coef += stack[r].coef;
-                if (stack[write - 1].coef == 0) --write;
-                else if (std::abs(stack[write - 1].coef) > 1) record.valid = false;
-            } else {
-                stack[write++] = stack[r];
-            }
-        }
-        stack.resize(record.valid ? write : record.begin);
+        record.valid = record.valid && coalesce(stack, record.begin);
+        if (!record.valid) stack.resize(record.begin);
         const std::span<const ChainEdge> edges(stack.data() + record.begin, stack.size() - record.begin);
         if (record.valid && !record_loop(i, edges, p, loops)) {
             record.valid = false;
