@@ -128,7 +128,18 @@ void Recording::Impl::read_objects() {
             read_all<std::uint32_t>(prefix + schema::k_topology_vertex_count, H5T_NATIVE_UINT32, 1u << 24);
         const std::uint64_t triangle_rows = rows(prefix + schema::k_triangles);
         // A writer killed mid-topology may leave trailing entries: keep the complete ones.
-        const std::size_t revisions = std::min({from.size(), vertices.size(), offsets.empty() ? 0 : offsets.size() - 1});
+        std::size_t revisions = std::min({from.size(), vertices.size(), offsets.empty() ? 0 : offsets.size() - 1});
+        // In a file still being written, or left by a killed writer, a topology that no complete
+        // frame uses may be on disk in part (SWMR orders each dataset's own writes, not the
+        // triangles' against the offsets'): only those from the last complete frame back count.
+        if (!finished) {
+            std::size_t used = 0;
+            if (frames > 0) {
+                const std::uint32_t last = last_frame_index();
+                while (used < revisions && from[used] <= last) ++used;
+            }
+            revisions = used;
+        }
         for (std::size_t r = 0; r < revisions; ++r) {
             if (offsets[r] > offsets[r + 1] || offsets[r + 1] > triangle_rows) {
                 where.fail(prefix + std::string(schema::k_topology_offsets) + ": entry " + std::to_string(r + 1) +

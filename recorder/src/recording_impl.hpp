@@ -4,6 +4,7 @@
 #include "h5.hpp"
 
 #include "collidescope/recorder/reader.hpp"
+#include "collidescope/recorder/schema.hpp"
 
 #include <algorithm>
 
@@ -45,6 +46,14 @@ struct Recording::Impl {
         std::vector<T> values(std::min<std::uint64_t>(dims[0], limit));
         h5::read_rows(where, d.get(), path, mem_type, 0, values.size(), values.data());
         return values;
+    }
+
+    /// /frames/index of the last complete frame (frames > 0).
+    std::uint32_t last_frame_index() const {
+        const h5::Id d = dataset(schema::k_frame_index);
+        std::uint32_t value = 0;
+        h5::read_rows(where, d.get(), schema::k_frame_index, H5T_NATIVE_UINT32, frames - 1, 1, &value);
+        return value;
     }
 
     void open_file();

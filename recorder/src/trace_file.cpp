@@ -315,7 +315,12 @@ void TraceFile::write_frames(std::span<const FrameRecord> records, std::span<con
             return m_frame_times[record.frame];
         });
     }
-    // The frame index last: a reader counts a frame complete when every dataset has its row.
+    // The frame index last, after a flush: a reader counts a frame complete when every dataset
+    // has its row, and SWMR orders only each dataset's own writes (its rows before its extent),
+    // not one dataset's against another's. Without this flush a process killed mid-flush can
+    // leave /collisions/offsets grown on disk but /collisions/pairs not. With it the index rows
+    // reach the disk only after every other row of their frames is there.
+    m_where.check(H5Fflush(m_file.get(), H5F_SCOPE_LOCAL), "cannot flush the file");
     append_per_frame<std::uint32_t>(m_index, H5T_NATIVE_UINT32, records,
                                     [](const FrameRecord& record) { return record.frame; });
     m_where.check(H5Fflush(m_file.get(), H5F_SCOPE_LOCAL), "cannot flush the file");
@@ -356,7 +361,11 @@ void TraceFile::close() {
 void TraceFile::mark_finished(const std::filesystem::path& path, std::uint64_t frames, std::uint32_t positions_stride,
                               const std::string& interrupted) {
     const h5::Where where(path.string());
-    const h5::Id file = where.own(retry_while_locked([&] { return H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT); }),
+    // Reopened for SWMR writing, as it was written: a process killed in here leaves the file's
+    // superblock marked "open for SWMR writing", which SWMR readers open. A plain read-write
+    // open marks it "open for writing", and then nothing opens it until h5clear clears the mark.
+    const unsigned flags = H5F_ACC_RDWR | H5F_ACC_SWMR_WRITE;
+    const h5::Id file = where.own(retry_while_locked([&] { return H5Fopen(path.c_str(), flags, H5P_DEFAULT); }),
                                   H5Fclose,
                                   "cannot reopen the recording to mark it finished (another process kept it open for 5 s?)");
     h5::write_attr(where, file.get(), schema::k_attr_frames_recorded, static_cast<std::int64_t>(frames));
