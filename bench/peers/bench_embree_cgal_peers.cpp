@@ -15,6 +15,9 @@
 //   build/bench/bench_embree_cgal_peers --scene cloth-rest:large [--self on|off|scene]
 //       [--frames 0,3,7] [--threads 1,2] [--no-fcl | --fcl-frames K]
 //       [--embree-build refit|low|medium] [--no-split]
+//   build/bench/bench_embree_cgal_peers INPUT... [the same options]
+//       (your own scene: any inputs `collidescope check` takes, a scene.json manifest, frame
+//       patterns, mesh files with point caches; --self scene follows the manifest)
 //   build/bench/bench_embree_cgal_peers --check-rule 1000000
 //       (the peer's exact test against the engine's on random pairs of one object whose
 //       corners lie on a 3x3x3 grid, with shared indices: degenerate, coplanar, touching)
@@ -30,6 +33,7 @@
 
 #include "collidescope/datasets.hpp"
 #include "collidescope/pipeline.hpp"
+#include "collidescope/scene.hpp"
 
 #include <cstdio>
 #include <cstdlib>
@@ -46,6 +50,7 @@ using namespace collidescope::peers;
 
 struct Options {
     std::string scene = "cloth-rest:large";
+    std::vector<std::string> inputs;       // non-empty: these inputs instead of a built-in scene
     std::string self = "on";               // on, off, or the scene's default
     std::vector<std::uint32_t> frames;     // empty: 5 frames spread over the animation
     std::vector<int> threads = {1, 2};     // thread counts of the `aabb` runs
@@ -88,6 +93,7 @@ Options parse(int argc, char** argv) {
         } else if (arg == "--no-split") options.split = false;
         else if (arg == "--fcl-frames") options.fcl_frames = std::stoul(value());
         else if (arg == "--check-rule") options.check_rule = std::stoull(value());
+        else if (!arg.starts_with("--")) options.inputs.push_back(arg);
         else throw std::invalid_argument("unknown argument " + arg);
     }
     return options;
@@ -304,7 +310,8 @@ int check_rule(std::uint64_t pairs) {
 
 int run(const Options& options) {
     if (options.check_rule > 0) return check_rule(options.check_rule);
-    const Scene scene = make_builtin_scene(options.scene);
+    const Scene scene = options.inputs.empty() ? make_builtin_scene(options.scene) : open_inputs(options.inputs);
+    const std::string scene_name = options.inputs.empty() ? options.scene : scene.name;
     const bool self = options.self == "scene" ? scene.self_collision : options.self == "on";
     const std::uint32_t count = scene.source->frame_count();
     const std::vector<std::uint32_t> indices = options.frames.empty() ? spread_frames(count, 5) : options.frames;
@@ -345,7 +352,7 @@ int run(const Options& options) {
                 "\"embree_candidates\": %.0f, \"colliding\": %.0f, \"extra\": %zu, \"missed\": %zu, \"repeated\": %zu}, \"fcl\": %s, "
                 "\"narrow_split\": {\"adjacent\": %zu, \"other\": %zu, \"engine_adjacent_ms\": %.3f, "
                 "\"engine_other_ms\": %.3f, \"cgal_adjacent_ms\": %.3f, \"cgal_other_ms\": %.3f}}\n",
-                options.scene.c_str(), quality, self ? "true" : "false", triangles, frame_list.c_str(), ours_json.c_str(),
+                scene_name.c_str(), quality, self ? "true" : "false", triangles, frame_list.c_str(), ours_json.c_str(),
                 peer.total_ms, peer.refit_ms, peer.collide_ms, peer.narrow_ms, peer.candidates, peer.colliding,
                 peer.extra, peer.missed, peer.repeated, fcl.c_str(), split.adjacent, split.other,
                 split.engine_adjacent_ms, split.engine_other_ms, split.cgal_adjacent_ms, split.cgal_other_ms);

@@ -51,6 +51,11 @@ struct FrameCounts {
     /// Triangles of self-collision objects whose own pairs the method proved apart without
     /// testing them (one-way normals and a simple contour, docs/algorithms.md; Mode 1 trees).
     std::uint64_t self_culled_triangles = 0;
+    /// Box-overlapping pairs of one self-collision object that share a vertex index and that
+    /// the traversal proved apart from their topology and one or two certified orient3d signs
+    /// (docs/algorithms.md, "Adjacent pairs"): never candidates, so never exact tests (Mode 1
+    /// trees and the GPU methods' final hierarchy).
+    std::uint64_t adjacent_apart = 0;
 };
 
 /// Calls `visit(name, milliseconds)` for every StageTimes field in declaration order. This
@@ -86,6 +91,7 @@ void for_each_count(const FrameCounts& counts, Visitor&& visit) {
     visit("exact_shortcuts", counts.exact_shortcuts);
     visit("positions_copied_bytes", counts.positions_copied_bytes);
     visit("self_culled_triangles", counts.self_culled_triangles);
+    visit("adjacent_apart", counts.adjacent_apart);
 }
 
 /// Bits of AabbFrameInfo::rebuild_reasons (the same values as bvh::RebuildReason).

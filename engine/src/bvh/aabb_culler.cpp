@@ -75,7 +75,7 @@ TraversalStats AabbCuller::cull(const FrameContext& context, std::vector<Triangl
     m_trees->apply_policy(frame, m_used, m_last_detection_ms, info);
     const double rebuilt = now();
     const TraversalStats traversal = traverse(roots(context, *m_trees), m_trees->views(frame, m_used),
-                                              m_config.traversal, candidates);
+                                              m_config.traversal, candidates, m_buffers.get());
     const double traversed = now();
 
     stats.ms.rebuild += (built - start) + (rebuilt - refitted);
@@ -86,6 +86,7 @@ TraversalStats AabbCuller::cull(const FrameContext& context, std::vector<Triangl
     stats.counts.candidate_pairs += traversal.candidate_pairs;
     stats.counts.nodes_visited += traversal.nodes_visited;
     stats.counts.self_culled_triangles += traversal.self_culled_triangles;
+    stats.counts.adjacent_apart += traversal.adjacent_apart;
     stats.counts.rebuilds += info.rebuilt_objects + info.background_started;
     stats.aabb = info;
     TraversalStats result = traversal;
@@ -112,7 +113,7 @@ TraversalStats AabbCuller::traverse_culled(const FrameContext& context,
         items.push_back({pair.a, pair.b, 0, 0});
     }
     const double start = now();
-    TraversalStats stats = traverse(std::move(items), views, m_config.traversal, candidates);
+    TraversalStats stats = traverse(std::move(items), views, m_config.traversal, candidates, m_buffers.get());
     stats.ms = now() - start;
     return stats;
 }

@@ -97,6 +97,7 @@ public:
 private:
     AabbConfig m_config;
     std::unique_ptr<ObjectTrees> m_trees;
+    std::shared_ptr<TraversalBuffers> m_buffers = make_traversal_buffers();
     std::vector<std::uint32_t> m_used;
     double m_last_detection_ms = 0;
 };

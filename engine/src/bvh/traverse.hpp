@@ -6,6 +6,7 @@
 #include "bvh/bvh.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -45,8 +46,12 @@ struct TraversalStats {
     std::uint64_t candidate_pairs = 0;  ///< triangle pairs whose boxes overlap
     /// Triangles below self nodes proven embedded (surface_patches.hpp), their pairs skipped.
     std::uint64_t self_culled_triangles = 0;
+    /// Box-overlapping pairs of one object sharing a vertex index that the traversal proved
+    /// apart (geometry/adjacent_filter.hpp): not candidates.
+    std::uint64_t adjacent_apart = 0;
 
     void add(const TraversalStats& other) {
+        adjacent_apart += other.adjacent_apart;
         nodes_visited += other.nodes_visited;
         box_tests += other.box_tests;
         candidate_pairs += other.candidate_pairs;
@@ -71,10 +76,17 @@ void step_pair(const WorkItem& item, std::span<const MeshView> meshes, std::vect
 void step_self(const WorkItem& item, std::span<const MeshView> meshes, std::vector<WorkItem>& stack,
                std::vector<TrianglePair>& candidates, TraversalStats& stats);
 
+/// The per-thread stacks and candidate buffers of a traversal, kept by a caller that
+/// traverses every frame so that they are reused: a fresh buffer of a million candidates a
+/// frame costs its page faults again each time (a sixth of a rod pile's frame).
+class TraversalBuffers;
+std::shared_ptr<TraversalBuffers> make_traversal_buffers();
+
 /// Runs `roots` to completion (in parallel, TBB) and appends every candidate pair, canonical,
 /// in an unspecified order. `meshes` is indexed by object; items name only objects whose
-/// tree is non-empty and fitted to the view's vertices.
+/// tree is non-empty and fitted to the view's vertices. `buffers` (optional) are reused.
 TraversalStats traverse(std::vector<WorkItem> roots, std::span<const MeshView> meshes,
-                        const TraversalConfig& config, std::vector<TrianglePair>& candidates);
+                        const TraversalConfig& config, std::vector<TrianglePair>& candidates,
+                        TraversalBuffers* buffers = nullptr);
 
 }  // namespace collidescope::bvh

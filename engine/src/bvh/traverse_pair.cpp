@@ -1,10 +1,11 @@
 // Tree-vs-tree traversal step: simultaneous descent, splitting the node with the larger
 // surface (a leaf is never split); leaves meet triangle by triangle on closed boxes (the
-// refit's Tree::leaf_boxes). A split
-// tests each child pair's boxes before pushing it, so pairs that do not overlap never reach
+// refit's Tree::leaf_boxes), and two subtrees of one object drop the adjacent pairs that
+// adjacent_apart proves apart. A split tests each child pair's boxes before pushing it, so pairs that do not overlap never reach
 // the stack (a popped pair is tested again, its boxes in cache: roots arrive untested).
 
 #include "bvh/traverse.hpp"
+#include "geometry/adjacent_filter.hpp"
 
 namespace collidescope::bvh {
 namespace {
@@ -16,6 +17,8 @@ void leaf_pair(const WorkItem& item, const MeshView& a, const Node& leaf_a, cons
     const Aabb* boxes_a = a.tree->leaf_boxes.data() + leaf_a.index;
     const Aabb* boxes_b = b.tree->leaf_boxes.data() + leaf_b.index;
     const bool same_object = item.obj_a == item.obj_b;
+    const TriIndices* tris_a = a.tree->leaf_triangles.data() + leaf_a.index;
+    const TriIndices* tris_b = b.tree->leaf_triangles.data() + leaf_b.index;
     const bool masked = !a.alive_triangles.empty() || !b.alive_triangles.empty();
     for (std::uint32_t i = 0; i < leaf_a.count; ++i) {
         if (masked && !a.alive_triangles.empty() && !a.alive_triangles[ids_a[i]]) continue;
@@ -23,6 +26,10 @@ void leaf_pair(const WorkItem& item, const MeshView& a, const Node& leaf_a, cons
         for (std::uint32_t j = 0; j < leaf_b.count; ++j) {
             if (masked && !b.alive_triangles.empty() && !b.alive_triangles[ids_b[j]]) continue;
             if (!overlaps(box_a, boxes_b[j])) continue;
+            if (same_object && filter::adjacent_apart(tris_a[i], tris_b[j], a.vertices.data())) {
+                ++stats.adjacent_apart;
+                continue;
+            }
             candidates.push_back(same_object ? make_pair_ordered(item.obj_a, ids_a[i], item.obj_b, ids_b[j])
                                              : TrianglePair{item.obj_a, ids_a[i], item.obj_b, ids_b[j]});
         }

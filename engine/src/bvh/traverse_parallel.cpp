@@ -27,6 +27,12 @@ struct Local {
     std::vector<TrianglePair> candidates;
     std::vector<WorkItem> stack;
     TraversalStats stats;
+
+    void clear() {
+        candidates.clear();
+        stack.clear();
+        stats = {};
+    }
 };
 
 // Breadth-first rounds until there are enough items to share out (or none are left).
@@ -42,12 +48,25 @@ std::vector<WorkItem> expand(std::vector<WorkItem> items, std::span<const MeshVi
 
 }  // namespace
 
-TraversalStats traverse(std::vector<WorkItem> roots, std::span<const MeshView> meshes,
-                        const TraversalConfig& config, std::vector<TrianglePair>& candidates) {
-    const Stopwatch stopwatch;
+class TraversalBuffers {
+public:
     Local serial;
-    const std::vector<WorkItem> items = expand(std::move(roots), meshes, config.parallel_items, serial);
     tbb::enumerable_thread_specific<Local> locals;
+};
+
+std::shared_ptr<TraversalBuffers> make_traversal_buffers() { return std::make_shared<TraversalBuffers>(); }
+
+TraversalStats traverse(std::vector<WorkItem> roots, std::span<const MeshView> meshes,
+                        const TraversalConfig& config, std::vector<TrianglePair>& candidates,
+                        TraversalBuffers* reused) {
+    const Stopwatch stopwatch;
+    TraversalBuffers own;
+    TraversalBuffers& buffers = reused ? *reused : own;
+    Local& serial = buffers.serial;
+    serial.clear();
+    for (Local& local : buffers.locals) local.clear();
+    const std::vector<WorkItem> items = expand(std::move(roots), meshes, config.parallel_items, serial);
+    tbb::enumerable_thread_specific<Local>& locals = buffers.locals;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, items.size(), 1),
                       [&](const tbb::blocked_range<std::size_t>& range) {
         Local& local = locals.local();
@@ -61,6 +80,9 @@ TraversalStats traverse(std::vector<WorkItem> roots, std::span<const MeshView> m
         }
     });
     TraversalStats stats = serial.stats;
+    std::size_t total = candidates.size() + serial.candidates.size();
+    for (const Local& local : locals) total += local.candidates.size();
+    candidates.reserve(total);
     candidates.insert(candidates.end(), serial.candidates.begin(), serial.candidates.end());
     for (const Local& local : locals) {
         stats.add(local.stats);

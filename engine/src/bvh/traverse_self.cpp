@@ -1,12 +1,14 @@
 // Self-traversal step (self-collision within one object): a node whose triangles are proven
 // embedded this frame (surface_patches.hpp: one-way normals and a simple contour) has no
 // pairs; otherwise its pairs are its children's own pairs plus the pairs between the two
-// children. Every other box-overlapping pair i < j goes to the narrow phase, adjacent ones
-// included: the exact self rule (self_triangles_collide) decides them, since sharing a vertex
-// does not prove two triangles apart (DESIGN.md).
+// children. Every other box-overlapping pair i < j goes to the narrow phase, except adjacent
+// pairs (sharing a vertex index) that adjacent_apart proves apart with certified signs; the
+// exact self rule (self_triangles_collide) decides the rest, since sharing a vertex does not
+// prove two triangles apart (DESIGN.md).
 
 #include "bvh/surface_patches.hpp"
 #include "bvh/traverse.hpp"
+#include "geometry/adjacent_filter.hpp"
 
 namespace collidescope::bvh {
 namespace {
@@ -15,10 +17,15 @@ void leaf_self(const WorkItem& item, const MeshView& mesh, const Node& leaf,
                std::vector<TrianglePair>& candidates, TraversalStats& stats) {
     const std::uint32_t* ids = mesh.tree->triangle_ids.data() + leaf.index;
     const Aabb* boxes = mesh.tree->leaf_boxes.data() + leaf.index;
+    const TriIndices* tris = mesh.tree->leaf_triangles.data() + leaf.index;
     for (std::uint32_t i = 0; i < leaf.count; ++i) {
         for (std::uint32_t j = i + 1; j < leaf.count; ++j) {
             ++stats.box_tests;
             if (!overlaps(boxes[i], boxes[j])) continue;
+            if (filter::adjacent_apart(tris[i], tris[j], mesh.vertices.data())) {
+                ++stats.adjacent_apart;
+                continue;
+            }
             candidates.push_back(make_pair_ordered(item.obj_a, ids[i], item.obj_a, ids[j]));
             ++stats.candidate_pairs;
         }

@@ -78,6 +78,7 @@ std::vector<TrianglePair> final_step_candidates(const FrameContext& context, con
     stats.nodes_visited = traversal.nodes_visited;
     stats.box_tests = traversal.box_tests;
     stats.self_culled_triangles = traversal.self_culled_triangles;
+    stats.adjacent_apart = traversal.adjacent_apart;
     return candidates;
 }
 

@@ -19,6 +19,7 @@ struct FinalStepStats {
     std::uint64_t nodes_visited = 0;
     std::uint64_t box_tests = 0;
     std::uint64_t self_culled_triangles = 0;
+    std::uint64_t adjacent_apart = 0;
 };
 
 /// Candidate pairs (canonical, triangle ids of the file) among the survivors `pcs` of every

@@ -86,6 +86,7 @@ std::vector<TrianglePair> GpuCuller::cull(const FrameContext& context, FrameStat
     stats.counts.box_tests += final_stats.box_tests;
     stats.counts.nodes_visited += final_stats.nodes_visited;
     stats.counts.self_culled_triangles += final_stats.self_culled_triangles;
+    stats.counts.adjacent_apart += final_stats.adjacent_apart;
     stats.counts.candidate_pairs += candidates.size();
     learn(plan, info, times, stats.ms.final_hierarchy);
     stats.gpu = std::move(info);

@@ -14,15 +14,16 @@ public:
     std::string_view name() const override { return "aabb"; }
 
     void detect(const FrameContext& context, std::vector<TrianglePair>& pairs, FrameStats& stats) override {
-        std::vector<TrianglePair> candidates;
-        const bvh::TraversalStats traversal = m_culler->cull(context, candidates, stats);
+        m_candidates.clear();  // kept from frame to frame: its memory is reused
+        const bvh::TraversalStats traversal = m_culler->cull(context, m_candidates, stats);
         const double before = m_culler->now();
-        narrow_phase(context.frame, candidates, pairs, stats);
+        narrow_phase(context.frame, m_candidates, pairs, stats);
         m_culler->set_detection_ms(traversal.ms + (m_culler->now() - before));
     }
 
 private:
     std::shared_ptr<bvh::AabbCuller> m_culler;
+    std::vector<TrianglePair> m_candidates;
 };
 
 }  // namespace
