@@ -5,6 +5,7 @@
 #include "ranks.hpp"
 
 #include "collidescope/error.hpp"
+#include "collidescope/memory.hpp"
 
 #include <exception>
 #include <iostream>
@@ -80,6 +81,8 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Frames free and allocate the same large buffers again: keep them (collidescope/memory.hpp).
+    collidescope::keep_freed_memory();
     // Under mpirun each rank runs the command on its block of frames; rank 0 assembles the
     // outputs (ranks.hpp). Serially this is just run().
     collidescope::app::ranks::Session ranks(argc, argv);

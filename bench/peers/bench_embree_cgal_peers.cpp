@@ -32,6 +32,7 @@
 #include "common/object_level.hpp"
 
 #include "collidescope/datasets.hpp"
+#include "collidescope/memory.hpp"
 #include "collidescope/pipeline.hpp"
 #include "collidescope/scene.hpp"
 
@@ -362,6 +363,7 @@ int run(const Options& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    keep_freed_memory();  // as the collidescope command does, for both sides of the comparison
     try {
         return run(parse(argc, argv));
     } catch (const std::exception& error) {
