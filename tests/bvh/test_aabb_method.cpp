@@ -78,7 +78,9 @@ void expect_exact(const std::vector<Frame>& frames, std::uint64_t* colliding = n
                 // less the adjacent pairs the traversal proved apart (adjacent_filter.hpp) and
                 // the self pairs of patches proven embedded (surface_patches.hpp).
                 const FrameCounts& counts = run.stats[f].counts;
-                if (!self_collision) EXPECT_EQ(counts.adjacent_apart, 0u) << "frame " << f;
+                if (!self_collision) {
+                    EXPECT_EQ(counts.adjacent_apart, 0u) << "frame " << f;
+                }
                 if (counts.self_culled_triangles == 0) {
                     EXPECT_EQ(counts.candidate_pairs + counts.adjacent_apart, reference.stats[f].counts.candidate_pairs)
                         << "frame " << f;

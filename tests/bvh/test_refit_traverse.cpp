@@ -140,7 +140,9 @@ TEST(BvhTraverse, CandidatesAreExactlyTheOverlappingTriangleBoxes) {
                 EXPECT_EQ(self_candidates, self_expected);
                 EXPECT_EQ(self_stats.adjacent_apart, apart);
                 EXPECT_EQ(pair_stats.adjacent_apart, 0u);
-                if (round % 2 == 1) EXPECT_GT(apart, 0u);  // the crumpled sheet has neighbours
+                if (round % 2 == 1) {
+                    EXPECT_GT(apart, 0u);  // the crumpled sheet has neighbours
+                }
                 EXPECT_EQ(pair_stats.candidate_pairs, pair_candidates.size());
                 EXPECT_EQ(self_stats.candidate_pairs, self_candidates.size());
                 EXPECT_GT(pair_stats.nodes_visited, 0u);

@@ -2,11 +2,13 @@
 // inputs, and the filter's fallback counter.
 
 #include "collidescope/geometry.hpp"
+#include "geometry/adjacent_filter.hpp"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 namespace collidescope {
@@ -89,6 +91,29 @@ TEST(Predicates, CountersSeeFallbacks) {
     EXPECT_EQ(after.filtered - before.filtered, 1u);
     EXPECT_EQ(after.shortcut - before.shortcut, 1u);
     EXPECT_EQ(after.exact - before.exact, 1u);
+}
+
+// The inline filter the traversal uses (adjacent_filter.hpp) and orient3d runs first: a
+// sign it certifies is the exact sign, on grid points (exact zeros) and float32 points.
+TEST(Predicates, Orient3dFilteredSignIsTheRationalSign) {
+    const std::uint64_t seed = 0x03D;
+    std::mt19937_64 rng(seed);
+    int decided = 0;
+    for (int n = 0; n < 100000; ++n) {
+        std::array<Vec3, 4> p;
+        const bool grid = n % 2 == 0;
+        std::uniform_int_distribution<int> cell(-2, 2);
+        std::uniform_real_distribution<float> real(-1, 1);
+        for (Vec3& q : p)
+            q = grid ? Vec3(cell(rng), cell(rng), cell(rng)) * 0.375
+                     : Vec3(real(rng), real(rng), real(rng)).cast<double>();
+        const int filtered = filter::orient3d_filtered(p[0], p[1], p[2], p[3]);
+        if (filtered == 0) continue;
+        ++decided;
+        ASSERT_EQ(filtered, reference_orient3d(p[0], p[1], p[2], p[3])) << "seed " << seed << " case " << n;
+    }
+    std::printf("seed %#llx: %d of 100000 signs certified by the filter\n", static_cast<unsigned long long>(seed), decided);
+    EXPECT_GT(decided, 40000);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 // (or is zero), where no intermediate can underflow or overflow; GMP rationals otherwise.
 
 #include "collidescope/geometry.hpp"
+#include "geometry/adjacent_filter.hpp"
 #include "geometry/expansion.hpp"
 #include "geometry/orient2d_filter.hpp"
 
@@ -24,8 +25,6 @@ namespace {
 
 thread_local PredicateCounters t_counters;
 
-constexpr double kEpsilon = std::numeric_limits<double>::epsilon() / 2;  // 2^-53
-constexpr double kOrient3dBound = 8.0 * kEpsilon;
 using filter::kAbsoluteBound;  // far above any underflow error in the filters
 // Coordinates with magnitude in [2^-200, 2^200] are multiples of 2^-252, so a product of
 // three differences is a multiple of 2^-756 and below 2^603: every expansion term is exact.
@@ -239,31 +238,17 @@ int determinant3_sign_expansion_entries(const double e[3][3][2]) {
 }  // namespace
 
 int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-    const double adx = a.x() - d.x(), bdx = b.x() - d.x(), cdx = c.x() - d.x();
-    const double ady = a.y() - d.y(), bdy = b.y() - d.y(), cdy = c.y() - d.y();
-    const double adz = a.z() - d.z(), bdz = b.z() - d.z(), cdz = c.z() - d.z();
-    const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-    const double cdxady = cdx * ady, adxcdy = adx * cdy;
-    const double adxbdy = adx * bdy, bdxady = bdx * ady;
-    const double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
-    const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
-                             (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
-                             (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
-    const double bound = kOrient3dBound * permanent + kAbsoluteBound;
-    // Comparisons with NaN or infinity (overflow) fail and fall through to the exact path.
-    if (det > bound && permanent < std::numeric_limits<double>::max()) {
+    // The filter (adjacent_filter.hpp, also inlined in the traversal); NaN or overflow leaves
+    // it undecided and falls through to the exact path.
+    if (const int filtered = filter::orient3d_filtered(a, b, c, d)) {
         ++t_counters.filtered;
-        return 1;
-    }
-    if (-det > bound && permanent < std::numeric_limits<double>::max()) {
-        ++t_counters.filtered;
-        return -1;
+        return filtered;
     }
     // Four points on one axis-aligned plane (a floor, a flat cloth at rest, sheets sliding on
     // one plane): a column of exact zeros (x - y == 0 only when x == y), so the determinant is
-    // 0. The commonest exact zero on flat scenes, for six comparisons.
-    if ((adz == 0 && bdz == 0 && cdz == 0) || (adx == 0 && bdx == 0 && cdx == 0) ||
-        (ady == 0 && bdy == 0 && cdy == 0)) {
+    // 0. The commonest exact zero on flat scenes, for nine comparisons.
+    const auto zero_column = [&](int k) { return a[k] == d[k] && b[k] == d[k] && c[k] == d[k]; };
+    if (zero_column(2) || zero_column(0) || zero_column(1)) {
         ++t_counters.shortcut;
         return 0;
     }
