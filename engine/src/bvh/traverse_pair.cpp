@@ -1,8 +1,8 @@
 // Tree-vs-tree traversal step: simultaneous descent, splitting the node with the larger
 // surface (a leaf is never split); leaves meet triangle by triangle on closed boxes (the
 // refit's Tree::leaf_boxes), and two subtrees of one object drop the adjacent pairs that
-// adjacent_apart proves apart. A split tests each child pair's boxes before pushing it, so pairs that do not overlap never reach
-// the stack (a popped pair is tested again, its boxes in cache: roots arrive untested).
+// adjacent_apart proves apart. A split tests each child pair's boxes before pushing it, so
+// pairs that do not overlap never reach the stack (a popped pair is tested again, its boxes in cache: roots arrive untested).
 
 #include "bvh/traverse.hpp"
 #include "geometry/adjacent_filter.hpp"

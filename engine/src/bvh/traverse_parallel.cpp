@@ -11,6 +11,8 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include <optional>
+
 namespace collidescope::bvh {
 namespace {
 
@@ -60,8 +62,8 @@ TraversalStats traverse(std::vector<WorkItem> roots, std::span<const MeshView> m
                         const TraversalConfig& config, std::vector<TrianglePair>& candidates,
                         TraversalBuffers* reused) {
     const Stopwatch stopwatch;
-    TraversalBuffers own;
-    TraversalBuffers& buffers = reused ? *reused : own;
+    std::optional<TraversalBuffers> own;  // only for a caller that keeps none
+    TraversalBuffers& buffers = reused ? *reused : own.emplace();
     Local& serial = buffers.serial;
     serial.clear();
     for (Local& local : buffers.locals) local.clear();
