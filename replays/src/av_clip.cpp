@@ -4,11 +4,6 @@
 
 #include "collidescope/error.hpp"
 
-extern "C" {
-#include <libavutil/dict.h>
-#include <libavutil/error.h>
-}
-
 #include <system_error>
 
 namespace collidescope::replays {
@@ -27,29 +22,29 @@ std::filesystem::path temporary_name(const std::filesystem::path& target) {
 
 std::string av_error_text(int code) {
     char text[AV_ERROR_MAX_STRING_SIZE] = {};
-    av_strerror(code, text, sizeof text);
+    av().av_strerror(code, text, sizeof text);
     return text;
 }
 
 AvFramePtr make_frame(AVPixelFormat format, int width, int height, const std::string& where) {
-    AvFramePtr frame(av_frame_alloc());
+    AvFramePtr frame(av().av_frame_alloc());
     if (!frame) throw InputError(where + ": out of memory for a video frame");
     frame->format = format;
     frame->width = width;
     frame->height = height;
-    const int status = av_frame_get_buffer(frame.get(), 0);
+    const int status = av().av_frame_get_buffer(frame.get(), 0);
     if (status < 0) throw InputError(where + ": cannot allocate a video frame (" + av_error_text(status) + ")");
     return frame;
 }
 
 AvClip::AvClip(const std::filesystem::path& target, const char* format)
-    : m_target(target), m_temporary(temporary_name(target)), m_packet(av_packet_alloc()) {
+    : m_target(target), m_temporary(temporary_name(target)), m_packet(av().av_packet_alloc()) {
     if (!m_packet) fail("out of memory for a packet");
-    check(avformat_alloc_output_context2(&m_format, nullptr, format, m_temporary.c_str()),
+    check(av().avformat_alloc_output_context2(&m_format, nullptr, format, m_temporary.c_str()),
           std::string("cannot set up the ") + format + " muxer");
-    const int status = avio_open(&m_format->pb, m_temporary.c_str(), AVIO_FLAG_WRITE);
+    const int status = av().avio_open(&m_format->pb, m_temporary.c_str(), AVIO_FLAG_WRITE);
     if (status < 0) {
-        avformat_free_context(m_format);
+        av().avformat_free_context(m_format);
         m_format = nullptr;
         fail("cannot create " + m_temporary.filename().string() + " beside it (" + av_error_text(status) +
              "; is the directory there and writable?)");
@@ -60,8 +55,8 @@ AvClip::~AvClip() { close_and_remove(); }
 
 void AvClip::close_and_remove() {
     if (m_format == nullptr) return;
-    if (m_format->pb != nullptr) avio_closep(&m_format->pb);
-    avformat_free_context(m_format);
+    if (m_format->pb != nullptr) av().avio_closep(&m_format->pb);
+    av().avformat_free_context(m_format);
     m_format = nullptr;
     std::error_code ignored;
     std::filesystem::remove(m_temporary, ignored);
@@ -70,29 +65,29 @@ void AvClip::close_and_remove() {
 bool AvClip::wants_global_header() const { return (m_format->oformat->flags & AVFMT_GLOBALHEADER) != 0; }
 
 void AvClip::start(AVCodecContext* encoder, const std::string& options) {
-    m_stream = avformat_new_stream(m_format, nullptr);
+    m_stream = av().avformat_new_stream(m_format, nullptr);
     if (m_stream == nullptr) fail("cannot add a video stream");
-    check(avcodec_parameters_from_context(m_stream->codecpar, encoder), "cannot describe the video stream");
+    check(av().avcodec_parameters_from_context(m_stream->codecpar, encoder), "cannot describe the video stream");
     m_stream->time_base = encoder->time_base;
     m_stream->avg_frame_rate = encoder->framerate;
     AVDictionary* dictionary = nullptr;
-    if (!options.empty()) check(av_dict_parse_string(&dictionary, options.c_str(), "=", ":", 0), "bad muxer options");
-    const int status = avformat_write_header(m_format, &dictionary);
-    av_dict_free(&dictionary);
+    if (!options.empty()) check(av().av_dict_parse_string(&dictionary, options.c_str(), "=", ":", 0), "bad muxer options");
+    const int status = av().avformat_write_header(m_format, &dictionary);
+    av().av_dict_free(&dictionary);
     check(status, "cannot write the file header");
     m_header_written = true;
 }
 
 void AvClip::encode(AVCodecContext* encoder, const AVFrame* frame) {
-    check(avcodec_send_frame(encoder, frame), "cannot encode a frame");
+    check(av().avcodec_send_frame(encoder, frame), "cannot encode a frame");
     for (;;) {
-        const int status = avcodec_receive_packet(encoder, m_packet.get());
+        const int status = av().avcodec_receive_packet(encoder, m_packet.get());
         if (status == AVERROR(EAGAIN) || status == AVERROR_EOF) return;
         check(status, "cannot encode a frame");
-        av_packet_rescale_ts(m_packet.get(), encoder->time_base, m_stream->time_base);
+        av().av_packet_rescale_ts(m_packet.get(), encoder->time_base, m_stream->time_base);
         m_packet->stream_index = m_stream->index;
         // Takes the packet's reference (and unreferences it) whatever it returns.
-        check(av_interleaved_write_frame(m_format, m_packet.get()), "cannot write to the file (disk full?)");
+        check(av().av_interleaved_write_frame(m_format, m_packet.get()), "cannot write to the file (disk full?)");
     }
 }
 
@@ -100,12 +95,12 @@ void AvClip::finish(AVCodecContext* encoder) {
     if (!m_header_written) fail("no frame to write");
     encode(encoder, nullptr);
     // The mp4 muxer's faststart moves the index to the front here, reading the file back.
-    check(av_write_trailer(m_format), "cannot complete the file");
-    check(avio_closep(&m_format->pb), "cannot close the file (disk full?)");
+    check(av().av_write_trailer(m_format), "cannot complete the file");
+    check(av().avio_closep(&m_format->pb), "cannot close the file (disk full?)");
     std::error_code error;
     std::filesystem::rename(m_temporary, m_target, error);
     if (error) fail("cannot move " + m_temporary.filename().string() + " onto it (" + error.message() + ")");
-    avformat_free_context(m_format);
+    av().avformat_free_context(m_format);
     m_format = nullptr;
 }
 

@@ -3,10 +3,7 @@
 // an FFmpeg output file written under a temporary name, an encoder's packets into it, and the
 // rename onto the real name at the end.
 
-extern "C" {
-#include <libavcodec/avcodec.h>
-#include <libavformat/avformat.h>
-}
+#include "av_api.hpp"
 
 #include <filesystem>
 #include <memory>
@@ -19,13 +16,13 @@ std::string av_error_text(int code);
 
 /// Deleters for FFmpeg's objects, for std::unique_ptr.
 struct AvCodecContextFree {
-    void operator()(AVCodecContext* c) const { avcodec_free_context(&c); }
+    void operator()(AVCodecContext* c) const { av().avcodec_free_context(&c); }
 };
 struct AvFrameFree {
-    void operator()(AVFrame* f) const { av_frame_free(&f); }
+    void operator()(AVFrame* f) const { av().av_frame_free(&f); }
 };
 struct AvPacketFree {
-    void operator()(AVPacket* p) const { av_packet_free(&p); }
+    void operator()(AVPacket* p) const { av().av_packet_free(&p); }
 };
 using AvCodecContextPtr = std::unique_ptr<AVCodecContext, AvCodecContextFree>;
 using AvFramePtr = std::unique_ptr<AVFrame, AvFrameFree>;

@@ -6,18 +6,13 @@
 
 #include "collidescope/error.hpp"
 
-extern "C" {
-#include <libavutil/opt.h>
-#include <libswscale/swscale.h>
-}
-
 #include <cstring>
 
 namespace collidescope::replays {
 namespace {
 
 struct SwsFree {
-    void operator()(SwsContext* c) const { sws_freeContext(c); }
+    void operator()(SwsContext* c) const { av().sws_freeContext(c); }
 };
 
 class H264Video final : public VideoEncoder {
@@ -29,29 +24,29 @@ public:
           m_width((settings.width + 1) / 2 * 2),
           m_height((settings.height + 1) / 2 * 2),
           m_clip(settings.path, "mp4") {
-        const AVCodec* codec = avcodec_find_encoder_by_name("libx264");
+        const AVCodec* codec = av().avcodec_find_encoder_by_name("libx264");
         if (codec == nullptr) {
             throw UnavailableError(settings.path.string() +
                                    ": this FFmpeg has no H.264 encoder (libx264); write a .gif, or install an "
                                    "FFmpeg built with libx264 (Debian's libavcodec59 is)");
         }
-        m_encoder.reset(avcodec_alloc_context3(codec));
+        m_encoder.reset(av().avcodec_alloc_context3(codec));
         if (!m_encoder) m_clip.fail("out of memory for the encoder");
         configure(*m_encoder);
         if (m_clip.wants_global_header()) m_encoder->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
         AVDictionary* options = nullptr;
-        av_dict_set(&options, "preset", settings.h264_preset.c_str(), 0);
-        av_dict_set(&options, "crf", "20", 0);           // text and thin edges stay sharp
-        av_dict_set(&options, "profile", "high", 0);
+        av().av_dict_set(&options, "preset", settings.h264_preset.c_str(), 0);
+        av().av_dict_set(&options, "crf", "20", 0);           // text and thin edges stay sharp
+        av().av_dict_set(&options, "profile", "high", 0);
         // No lookahead and no B-frames: each frame leaves the encoder as it arrives, so the
         // replay does not wait for a buffered tail of frames at the end (the MP4 replay was 4%
         // slower than the PNG one with it; docs/experiments/video-encoding.md).
-        av_dict_set(&options, "tune", "zerolatency", 0);
-        const int status = avcodec_open2(m_encoder.get(), codec, &options);
-        av_dict_free(&options);
+        av().av_dict_set(&options, "tune", "zerolatency", 0);
+        const int status = av().avcodec_open2(m_encoder.get(), codec, &options);
+        av().av_dict_free(&options);
         m_clip.check(status, "cannot open the H.264 encoder");
         m_clip.start(m_encoder.get(), "movflags=+faststart");
-        m_scaler.reset(sws_getContext(m_width, m_height, AV_PIX_FMT_RGBA, m_width, m_height, AV_PIX_FMT_YUV420P,
+        m_scaler.reset(av().sws_getContext(m_width, m_height, AV_PIX_FMT_RGBA, m_width, m_height, AV_PIX_FMT_YUV420P,
                                       SWS_BILINEAR, nullptr, nullptr, nullptr));
         if (!m_scaler) m_clip.fail("cannot set up the RGBA to yuv420p conversion");
         if (m_width != settings.width || m_height != settings.height) {
@@ -62,9 +57,9 @@ public:
 
     void add_frame(std::span<const std::uint8_t> rgba) override {
         const std::uint8_t* source = pad(rgba);
-        m_clip.check(av_frame_make_writable(m_frame.get()), "cannot reuse a video frame");
+        m_clip.check(av().av_frame_make_writable(m_frame.get()), "cannot reuse a video frame");
         const int stride = 4 * m_width;
-        m_clip.check(sws_scale(m_scaler.get(), &source, &stride, 0, m_height, m_frame->data, m_frame->linesize),
+        m_clip.check(av().sws_scale(m_scaler.get(), &source, &stride, 0, m_height, m_frame->data, m_frame->linesize),
                      "cannot convert a frame to yuv420p");
         m_frame->pts = static_cast<std::int64_t>(m_frames);
         m_clip.encode(m_encoder.get(), m_frame.get());
@@ -79,7 +74,7 @@ private:
         encoder.width = m_width;
         encoder.height = m_height;
         encoder.pix_fmt = AV_PIX_FMT_YUV420P;
-        encoder.framerate = av_d2q(m_settings.fps, 100000);
+        encoder.framerate = av().av_d2q(m_settings.fps, 100000);
         encoder.time_base = av_inv_q(encoder.framerate);
         encoder.gop_size = 2 * static_cast<int>(m_settings.fps + 0.5);  // a key frame every 2 s: seeking
         // What swscale's default conversion produces: BT.601, limited range; said in the stream.

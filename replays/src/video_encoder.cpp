@@ -2,13 +2,10 @@
 
 #include "video_encoder.hpp"
 
+#include "av_api.hpp"
 #include "video_backends.hpp"
 
 #include "collidescope/error.hpp"
-
-extern "C" {
-#include <libavutil/log.h>
-}
 
 #include <algorithm>
 #include <cctype>
@@ -40,7 +37,7 @@ std::unique_ptr<VideoEncoder> open_video(const VideoSettings& settings) {
     }
     // The library never prints: FFmpeg's own log (libx264's statistics, muxer notes) is off;
     // every failure comes back as an error code and becomes an InputError naming the file.
-    av_log_set_level(AV_LOG_QUIET);
+    av().av_log_set_level(AV_LOG_QUIET);
     if (lower_extension(settings.path) == ".gif") return open_gif_video(settings);
     return open_h264_video(settings);
 }
