@@ -13,7 +13,7 @@
 // status 2 when any).
 //
 //   build/bench/bench_embree_cgal_peers --scene cloth-rest:large [--self on|off|scene]
-//       [--frames 0,3,7] [--threads 1,2] [--no-fcl | --fcl-frames K]
+//       [--frames 0,3,7 | --frames all] [--threads 1,2] [--no-fcl | --fcl-frames K]
 //       [--embree-build refit|low|medium] [--no-split]
 //   build/bench/bench_embree_cgal_peers INPUT... [the same options]
 //       (your own scene: any inputs `collidescope check` takes, a scene.json manifest, frame
@@ -39,6 +39,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <numeric>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -54,6 +55,7 @@ struct Options {
     std::vector<std::string> inputs;       // non-empty: these inputs instead of a built-in scene
     std::string self = "on";               // on, off, or the scene's default
     std::vector<std::uint32_t> frames;     // empty: 5 frames spread over the animation
+    bool every_frame = false;              // --frames all: every frame, in order
     std::vector<int> threads = {1, 2};     // thread counts of the `aabb` runs
     bool fcl = true;
     RTCBuildQuality embree_quality = RTC_BUILD_QUALITY_REFIT;  // --embree-build refit|low|medium
@@ -79,7 +81,11 @@ Options parse(int argc, char** argv) {
         };
         if (arg == "--scene") options.scene = value();
         else if (arg == "--self") options.self = value();
-        else if (arg == "--frames") options.frames = parse_list(value());
+        else if (arg == "--frames") {
+            const std::string list = value();
+            options.every_frame = list == "all";
+            if (!options.every_frame) options.frames = parse_list(list);
+        }
         else if (arg == "--threads") {
             options.threads.clear();
             for (std::uint32_t t : parse_list(value())) options.threads.push_back(static_cast<int>(t));
@@ -315,7 +321,11 @@ int run(const Options& options) {
     const std::string scene_name = options.inputs.empty() ? options.scene : scene.name;
     const bool self = options.self == "scene" ? scene.self_collision : options.self == "on";
     const std::uint32_t count = scene.source->frame_count();
-    const std::vector<std::uint32_t> indices = options.frames.empty() ? spread_frames(count, 5) : options.frames;
+    std::vector<std::uint32_t> indices = options.frames.empty() ? spread_frames(count, 5) : options.frames;
+    if (options.every_frame) {
+        indices.resize(count);
+        std::iota(indices.begin(), indices.end(), 0u);
+    }
     std::vector<Frame> frames;
     std::size_t triangles = 0;
     for (std::uint32_t f : indices) frames.push_back(scene.source->frame(f));

@@ -116,4 +116,19 @@ MethodRun run_pipeline(const std::string& method, const std::vector<Frame>& fram
     return run;
 }
 
+std::vector<TrianglePair> box_pairs(const MeshData& a, const MeshData* b) {
+    std::vector<TrianglePair> pairs;
+    const MeshData& other = b != nullptr ? *b : a;
+    for (std::uint32_t i = 0; i < a.triangles.size(); ++i) {
+        const bvh::Aabb box_i = bvh::triangle_box(a.triangles, a.vertices, i);
+        for (std::uint32_t j = b != nullptr ? 0 : i + 1; j < other.triangles.size(); ++j) {
+            if (bvh::overlaps(box_i, bvh::triangle_box(other.triangles, other.vertices, j))) {
+                pairs.push_back({0, i, b != nullptr ? 1u : 0u, j});
+            }
+        }
+    }
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
+
 }  // namespace collidescope::testing

@@ -4,6 +4,7 @@
 // scene through a pipeline or a configured method.
 
 #include "methods/aabb_method.hpp"
+#include "support/scene_builders.hpp"
 #include "bvh/validate_tree.hpp"
 
 #include "collidescope/pipeline.hpp"
@@ -36,6 +37,10 @@ struct TreeChecker {
     /// A hook for AabbConfig::on_tree that validates every event's tree into this checker.
     std::function<void(const bvh::TreeEvent&)> hook();
 };
+
+/// All triangle pairs whose closed boxes overlap, by testing every pair: between `a` (object
+/// 0) and `*b` (object 1), or i < j within `a` when `b` is null. Sorted.
+std::vector<TrianglePair> box_pairs(const MeshData& a, const MeshData* b);
 
 /// The pairs of every frame of `scene` from `method` (run directly with the object level),
 /// plus its stats.

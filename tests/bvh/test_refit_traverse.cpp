@@ -1,6 +1,7 @@
 // Refit against fresh builds and the validator, the quality measure, and the traversal's
 // candidates against the obvious all-pairs box filter.
 
+#include "bvh/bvh_helpers.hpp"
 #include "support/scene_builders.hpp"
 
 #include "bvh/bvh.hpp"
@@ -80,22 +81,6 @@ TEST(BvhRefit, SameBoxesForEveryThreadCount) {
     }
 }
 
-// All triangle pairs whose closed boxes overlap: between two meshes, or i < j within one.
-std::vector<TrianglePair> box_pairs(const MeshData& a, const MeshData* b) {
-    std::vector<TrianglePair> pairs;
-    const MeshData& other = b != nullptr ? *b : a;
-    for (std::uint32_t i = 0; i < a.triangles.size(); ++i) {
-        const Aabb box_i = triangle_box(a.triangles, a.vertices, i);
-        for (std::uint32_t j = b != nullptr ? 0 : i + 1; j < other.triangles.size(); ++j) {
-            if (overlaps(box_i, triangle_box(other.triangles, other.vertices, j))) {
-                pairs.push_back({0, i, b != nullptr ? 1u : 0u, j});
-            }
-        }
-    }
-    std::sort(pairs.begin(), pairs.end());
-    return pairs;
-}
-
 TEST(BvhTraverse, CandidatesAreExactlyTheOverlappingTriangleBoxes) {
     std::mt19937_64 rng(21);
     for (int round = 0; round < 6; ++round) {
@@ -118,13 +103,13 @@ TEST(BvhTraverse, CandidatesAreExactlyTheOverlappingTriangleBoxes) {
                 const TraversalStats self_stats = traverse({{0, 0, 0, 0}}, views, {items}, self_candidates);
                 std::sort(pair_candidates.begin(), pair_candidates.end());
                 std::sort(self_candidates.begin(), self_candidates.end());
-                EXPECT_EQ(pair_candidates, box_pairs(a, &b));
+                EXPECT_EQ(pair_candidates, testing::box_pairs(a, &b));
                 // Within one object, the pairs adjacent_apart proves apart are not candidates
                 // (the slow way: every box pair through it, each one it drops checked against
                 // the exact self rule).
                 std::vector<TrianglePair> self_expected;
                 std::uint64_t apart = 0;
-                for (const TrianglePair& pair : box_pairs(a, nullptr)) {
+                for (const TrianglePair& pair : testing::box_pairs(a, nullptr)) {
                     const TriIndices& ta = a.triangles[pair.tri_a];
                     const TriIndices& tb = a.triangles[pair.tri_b];
                     if (!filter::adjacent_apart(ta, tb, a.vertices.data())) {
@@ -164,7 +149,7 @@ TEST(BvhTraverse, PrunesSeparatedParts) {
     std::vector<TrianglePair> candidates;
     const TraversalStats stats = traverse({{0, 1, 0, 0}}, views, {}, candidates);
     std::sort(candidates.begin(), candidates.end());
-    EXPECT_EQ(candidates, box_pairs(a, &b));
+    EXPECT_EQ(candidates, testing::box_pairs(a, &b));
     EXPECT_FALSE(candidates.empty());
     EXPECT_LT(stats.box_tests * 100, std::uint64_t{a.triangles.size()} * b.triangles.size());
 }

@@ -39,12 +39,25 @@ std::vector<std::uint32_t> self_objects(const FrameContext& context) {
     return objects;
 }
 
-std::vector<WorkItem> roots(const FrameContext& context, const ObjectTrees& trees) {
+// Objects in some pair with another object: their trees' wide layouts are fitted.
+std::vector<std::uint32_t> paired_objects(const FrameContext& context) {
+    std::vector<bool> paired(context.frame.objects.size(), false);
+    for (const ObjectPair& pair : context.object_pairs) {
+        if (pair.a != pair.b) paired[pair.a] = paired[pair.b] = true;
+    }
+    std::vector<std::uint32_t> objects;
+    for (std::uint32_t o = 0; o < paired.size(); ++o) {
+        if (paired[o]) objects.push_back(o);
+    }
+    return objects;
+}
+
+std::vector<WorkItem> roots(const FrameContext& context, const ObjectTrees& trees, std::span<const MeshView> views) {
     std::vector<WorkItem> items;
     for (const ObjectPair& pair : context.object_pairs) {
         if (pair.a == pair.b && !context.self_collision) continue;
         if (trees.at(pair.a).tree.empty() || trees.at(pair.b).tree.empty()) continue;
-        items.push_back({pair.a, pair.b, 0, 0});
+        add_pair_root(pair.a, pair.b, views, items);
     }
     return items;
 }
@@ -74,13 +87,16 @@ TraversalStats AabbCuller::cull(const FrameContext& context, std::vector<Triangl
     for (const std::uint32_t object : m_used) info.tree_quality = std::max(info.tree_quality, m_trees->at(object).quality);
     m_trees->apply_policy(frame, m_used, m_last_detection_ms, info);
     const double rebuilt = now();
-    const TraversalStats traversal = traverse(roots(context, *m_trees), m_trees->views(frame, m_used),
-                                              m_config.traversal, candidates, m_buffers.get());
+    m_trees->fit_wide(paired_objects(context));
+    const double widened = now();
+    const std::vector<MeshView> views = m_trees->views(frame, m_used);
+    const TraversalStats traversal =
+        traverse(roots(context, *m_trees, views), views, m_config.traversal, candidates, m_buffers.get());
     const double traversed = now();
 
     stats.ms.rebuild += (built - start) + (rebuilt - refitted);
-    stats.ms.refit += refitted - built;
-    stats.ms.traversal += traversed - rebuilt;
+    stats.ms.refit += (refitted - built) + (widened - rebuilt);
+    stats.ms.traversal += traversed - widened;
     stats.ms.cull += traversed - start;
     stats.counts.box_tests += traversal.box_tests;
     stats.counts.candidate_pairs += traversal.candidate_pairs;
@@ -90,7 +106,7 @@ TraversalStats AabbCuller::cull(const FrameContext& context, std::vector<Triangl
     stats.counts.rebuilds += info.rebuilt_objects + info.background_started;
     stats.aabb = info;
     TraversalStats result = traversal;
-    result.ms = traversed - rebuilt;
+    result.ms = traversed - widened;
     return result;
 }
 

@@ -11,14 +11,16 @@
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <memory>
+#include <mutex>
 #include <numeric>
 
 namespace collidescope::bvh {
 namespace detail {
 
-BuildInput make_build_input(std::span<const TriIndices> triangles, std::span<const Vec3> vertices, bool with_boxes) {
-    BuildInput input;
-    if (with_boxes) input.boxes.resize(triangles.size());
+void make_build_input(std::span<const TriIndices> triangles, std::span<const Vec3> vertices, bool with_boxes,
+                      BuildInput& input) {
+    input.boxes.resize(with_boxes ? triangles.size() : 0);
     input.centroids.resize(triangles.size());
     input.centroid_bounds = tbb::parallel_reduce(
         tbb::blocked_range<std::size_t>(0, triangles.size(), 4096), Aabb{},
@@ -34,19 +36,18 @@ BuildInput make_build_input(std::span<const TriIndices> triangles, std::span<con
             return bounds;
         },
         [](Aabb a, const Aabb& b) { a.grow(b); return a; });  // min/max: order-independent
-    return input;
 }
 
 }  // namespace detail
 
 namespace {
 
-// Copies the raw tree into preorder (left child next, right child in `index`), iteratively,
-// and measures its depth on the way (a separate recursive walk cost 4% of an LBVH build).
-std::vector<Node> to_preorder(const detail::RawTree& raw, std::uint32_t& depth) {
-    const auto used = raw.used.load();
-    std::vector<Node> nodes;
-    nodes.reserve(used);
+// Copies the raw tree into `nodes`, in preorder (left child next, right child in `index`),
+// iteratively, and measures its depth on the way (a separate recursive walk cost 4% of an
+// LBVH build).
+void to_preorder(const detail::RawTree& raw, std::vector<Node>& nodes, std::uint32_t& depth) {
+    nodes.clear();
+    nodes.reserve(raw.used.load());
     struct Item {
         std::uint32_t raw;
         std::uint32_t parent;  // preorder index of the parent whose right child this is, or ~0
@@ -70,7 +71,6 @@ std::vector<Node> to_preorder(const detail::RawTree& raw, std::uint32_t& depth) 
             stack.push_back({node.first, ~0u, item.depth + 1});
         }
     }
-    return nodes;
 }
 
 // Cuts the tree into subtrees of at most `grain` nodes (refit in parallel) below a top part.
@@ -85,10 +85,13 @@ void plan_range(const Tree& tree, NodeRange range, std::uint32_t grain, RefitPla
     plan_range(tree, {node.index, range.end}, grain, plan);
 }
 
-// The refit plan: the cut, then each subtree's leaves, slots and inner nodes. Subtrees come
-// left to right, so their leaves, and so their slots, follow each other.
-RefitPlan plan_refit(const Tree& tree, std::uint32_t grain) {
-    RefitPlan plan;
+// The refit plan, in `plan`: the cut, then each subtree's leaves, slots and inner nodes.
+// Subtrees come left to right, so their leaves, and so their slots, follow each other.
+void plan_refit(const Tree& tree, std::uint32_t grain, RefitPlan& plan) {
+    plan.subtrees.clear();
+    plan.top.clear();
+    plan.leaves.clear();
+    plan.inner.clear();
     plan_range(tree, {0, static_cast<std::uint32_t>(tree.nodes.size())}, grain, plan);
     plan.leaf_ends.assign(tree.leaf_triangles.size(), 0);
     std::uint32_t slot = 0;
@@ -109,7 +112,6 @@ RefitPlan plan_refit(const Tree& tree, std::uint32_t grain) {
         subtree.slot_end = slot;
         subtree.inner_end = static_cast<std::uint32_t>(plan.inner.size());
     }
-    return plan;
 }
 
 std::uint32_t depth_below(const Tree& tree, std::uint32_t node) {
@@ -118,37 +120,44 @@ std::uint32_t depth_below(const Tree& tree, std::uint32_t node) {
     return 1 + std::max(depth_below(tree, node + 1), depth_below(tree, n.index));
 }
 
-}  // namespace
-
-std::uint32_t tree_depth(const Tree& tree) { return tree.empty() ? 0 : depth_below(tree, 0); }
-
-BuildStats build_tree(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
-                      const BuildConfig& config, Tree& tree) {
+// The build, writing into `tree`'s storage and `scratch` (both reused: a rebuild touches no
+// fresh memory, whose first-touch page faults were most of a rebuild's time on the CI VM).
+BuildStats build_into(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
+                      const BuildConfig& config, Tree& tree, detail::BuildScratch& scratch) {
     const Stopwatch stopwatch;
-    tree = Tree{};
     BuildStats stats;
-    if (triangles.empty()) return stats;
+    if (triangles.empty()) {
+        tree = Tree{};
+        return stats;
+    }
     const auto n = static_cast<std::uint32_t>(triangles.size());
-    const detail::BuildInput input = detail::make_build_input(triangles, vertices, config.builder == Builder::Sah);
-    detail::RawTree raw;
+    detail::BuildInput& input = scratch.input;
+    detail::make_build_input(triangles, vertices, config.builder == Builder::Sah, input);
+    detail::RawTree& raw = scratch.raw;
     raw.nodes.resize(2 * std::size_t{n} - 1);
+    raw.used = 1;
     raw.ids.resize(n);
     std::iota(raw.ids.begin(), raw.ids.end(), 0u);
     if (config.builder == Builder::Sah) {
         detail::build_sah(input, config, raw);
     } else {
-        detail::build_lbvh(input, config, raw);
+        detail::build_lbvh(input, config, raw, scratch.lbvh);
     }
     std::uint32_t depth = 0;
-    tree.nodes = to_preorder(raw, depth);
-    tree.triangle_ids = std::move(raw.ids);
+    to_preorder(raw, tree.nodes, depth);
+    tree.triangle_ids.swap(raw.ids);  // the old ids' storage is the next build's
     tree.leaf_triangles.resize(n);
     tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 8192), [&](const tbb::blocked_range<std::uint32_t>& r) {
         for (std::uint32_t k = r.begin(); k != r.end(); ++k) tree.leaf_triangles[k] = triangles[tree.triangle_ids[k]];
     });
     tree.leaf_boxes.resize(n);
-    tree.refit_plan = plan_refit(tree, std::max(config.refit_grain, 1u));
-    if (config.surface_patches) build_surface_patches(tree);
+    plan_refit(tree, std::max(config.refit_grain, 1u), tree.refit_plan);
+    if (config.surface_patches) {
+        build_surface_patches(tree);
+    } else {
+        tree.patches = SurfacePatches{};
+    }
+    ++tree.builds;
     const RefitStats fitted = refit(tree, triangles, vertices);
     tree.built_cost = fitted.sah_cost;
     stats.nodes = static_cast<std::uint32_t>(tree.nodes.size());
@@ -156,6 +165,36 @@ BuildStats build_tree(std::span<const TriIndices> triangles, std::span<const Vec
     stats.depth = depth;
     stats.sah_cost = fitted.sah_cost;
     stats.ms = stopwatch.elapsed_ms();
+    return stats;
+}
+
+}  // namespace
+
+std::uint32_t tree_depth(const Tree& tree) { return tree.empty() ? 0 : depth_below(tree, 0); }
+
+BuildStats build_tree(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
+                      const BuildConfig& config, Tree& tree) {
+    detail::BuildScratch scratch;
+    return build_into(triangles, vertices, config, tree, scratch);
+}
+
+TreeBuilder::TreeBuilder() = default;
+TreeBuilder::~TreeBuilder() = default;
+
+BuildStats TreeBuilder::build(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
+                              const BuildConfig& config, Tree& tree) {
+    std::unique_ptr<detail::BuildScratch> scratch;
+    {
+        const std::lock_guard lock(m_mutex);
+        if (!m_idle.empty()) {
+            scratch = std::move(m_idle.back());
+            m_idle.pop_back();
+        }
+    }
+    if (!scratch) scratch = std::make_unique<detail::BuildScratch>();
+    const BuildStats stats = build_into(triangles, vertices, config, tree, *scratch);
+    const std::lock_guard lock(m_mutex);
+    m_idle.push_back(std::move(scratch));
     return stats;
 }
 

@@ -3,6 +3,7 @@
 // tree they produce, which build.cpp turns into the preorder Tree.
 
 #include "bvh/bvh.hpp"
+#include "bvh/radix_sort.hpp"
 
 #include <atomic>
 #include <span>
@@ -35,15 +36,30 @@ struct RawTree {
     std::uint32_t allocate_pair() { return used.fetch_add(2, std::memory_order_relaxed); }
 };
 
-/// The triangles' centroids and their bounds; their boxes too when `with_boxes` (the SAH
-/// builder bins them; the LBVH builder needs centroids only).
-BuildInput make_build_input(std::span<const TriIndices> triangles, std::span<const Vec3> vertices, bool with_boxes);
+/// The LBVH builder's keys and its radix sort's second buffer.
+struct LbvhScratch {
+    std::vector<MortonKey> keys;
+    std::vector<MortonKey> sorted;
+};
+
+/// Everything a build writes besides the tree (bvh.hpp's TreeBuilder keeps it between builds).
+struct BuildScratch {
+    BuildInput input;
+    RawTree raw;
+    LbvhScratch lbvh;
+};
+
+/// Fills `input` with the triangles' centroids and their bounds, and their boxes too when
+/// `with_boxes` (the SAH builder bins them; the LBVH builder needs centroids only). Reuses
+/// `input`'s storage.
+void make_build_input(std::span<const TriIndices> triangles, std::span<const Vec3> vertices, bool with_boxes,
+                      BuildInput& input);
 
 /// Top-down binned SAH build into `raw` (nodes sized 2n - 1, ids 0..n-1 on entry).
 void build_sah(const BuildInput& input, const BuildConfig& config, RawTree& raw);
 
-/// Linear (Morton code) build into `raw` (same contract as build_sah).
-void build_lbvh(const BuildInput& input, const BuildConfig& config, RawTree& raw);
+/// Linear (Morton code) build into `raw` (same contract as build_sah), its keys in `scratch`.
+void build_lbvh(const BuildInput& input, const BuildConfig& config, RawTree& raw, LbvhScratch& scratch);
 
 /// Maps a value in [lo, lo + 1/scale) to 0 .. cells - 1, clamping anything else (including
 /// NaN, from infinite or tiny extents) into range. Used for bins and Morton cells.

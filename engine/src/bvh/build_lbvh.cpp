@@ -30,14 +30,16 @@ std::uint64_t spread_bits(std::uint64_t x) {
     return x;
 }
 
-std::vector<MortonKey> sorted_codes(const BuildInput& input) {
+// The keys, sorted, in scratch.keys.
+void sort_codes(const BuildInput& input, LbvhScratch& scratch) {
     const Aabb& bounds = input.centroid_bounds;
     std::array<double, 3> scale{};
     for (int k = 0; k < 3; ++k) {
         const double extent = bounds.hi[k] - bounds.lo[k];
         scale[k] = extent > 0 ? static_cast<double>(k_cells) / extent : 0;
     }
-    std::vector<MortonKey> keys(input.centroids.size());
+    std::vector<MortonKey>& keys = scratch.keys;
+    keys.resize(input.centroids.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, keys.size(), 4096),
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
@@ -48,9 +50,7 @@ std::vector<MortonKey> sorted_codes(const BuildInput& input) {
             keys[i] = {code, static_cast<std::uint32_t>(i)};
         }
     });
-    std::vector<MortonKey> scratch;
-    radix_sort(keys, scratch);
-    return keys;
+    radix_sort(keys, scratch.sorted);
 }
 
 class LbvhBuilder {
@@ -96,8 +96,9 @@ private:
 
 }  // namespace
 
-void build_lbvh(const BuildInput& input, const BuildConfig& config, RawTree& raw) {
-    const std::vector<MortonKey> keys = sorted_codes(input);
+void build_lbvh(const BuildInput& input, const BuildConfig& config, RawTree& raw, LbvhScratch& scratch) {
+    sort_codes(input, scratch);
+    const std::vector<MortonKey>& keys = scratch.keys;
     for (std::size_t i = 0; i < keys.size(); ++i) raw.ids[i] = keys[i].id;
     LbvhBuilder builder(keys, config, raw);
     builder.build(0, 0, static_cast<std::uint32_t>(keys.size()));

@@ -9,12 +9,15 @@
 // Exactness: every box is closed and built from the input coordinates by min/max only, so a
 // node box contains its triangles exactly and a box comparison on doubles is exact.
 
+#include "bvh/wide_tree.hpp"
 #include "collidescope/aabb_options.hpp"
 #include "collidescope/types.hpp"
 
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <span>
 #include <vector>
 
@@ -153,6 +156,9 @@ struct Tree {
     RefitPlan refit_plan;
     SurfacePatches patches;  ///< self-collision culling's per-node data (may be empty)
     double built_cost = 0;  ///< sah_cost right after the last build (quality reference)
+    std::uint64_t builds = 0;  ///< builds of this tree so far (the wide layout's key)
+    std::uint64_t fits = 0;    ///< builds and refits so far: changes whenever the boxes do
+    WideTree wide;  ///< the 4-wide layout, fitted on demand (wide_tree.hpp); may be stale
 
     bool empty() const { return nodes.empty(); }
 };
@@ -184,11 +190,37 @@ struct BuildStats {
     double sah_cost = 0;         ///< sah_cost of the new tree
 };
 
-/// Builds `tree` from scratch over every triangle of the mesh, in parallel (TBB). The spans
-/// are read during the call only. Deterministic: the same input gives the same tree for any
-/// thread count.
+/// Builds `tree` from scratch over every triangle of the mesh, in parallel (TBB), into the
+/// storage `tree` already has. The spans are read during the call only. Deterministic: the
+/// same input gives the same tree for any thread count, whatever `tree` held before.
 BuildStats build_tree(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
                       const BuildConfig& config, Tree& tree);
+
+namespace detail {
+struct BuildScratch;
+}
+
+/// build_tree for a caller that builds again and again (the `aabb` method's rebuilds): it
+/// keeps the builds' working memory (per-triangle centroids, Morton keys, the raw tree) for
+/// the next build instead of freeing it. Memory touched for the first time was most of a
+/// rebuild's time on the CI VM (a 22,598-triangle build: 11.3 ms with 668 first-touch page
+/// faults, 1.8 ms warm; docs/experiments/2026-11-26-rebuild-memory.md). Thread-safe: builds
+/// running at once each take their own working memory.
+class TreeBuilder {
+public:
+    TreeBuilder();
+    ~TreeBuilder();
+    TreeBuilder(const TreeBuilder&) = delete;
+    TreeBuilder& operator=(const TreeBuilder&) = delete;
+
+    /// Same contract and result as build_tree.
+    BuildStats build(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
+                     const BuildConfig& config, Tree& tree);
+
+private:
+    std::mutex m_mutex;
+    std::vector<std::unique_ptr<detail::BuildScratch>> m_idle;  ///< working memory not in use
+};
 
 /// What a refit did.
 struct RefitStats {

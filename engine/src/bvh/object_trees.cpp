@@ -80,7 +80,7 @@ void ObjectTrees::build(const Frame& frame, std::span<const std::uint32_t> objec
             const ObjectFrame& mesh = frame.objects[objects[k]];
             ObjectTree& slot = m_trees[objects[k]];
             const BuildStats stats =
-                build_tree(mesh.topology->triangles, mesh.vertices, build_config(objects[k]), slot.tree);
+                m_builder.build(mesh.topology->triangles, mesh.vertices, build_config(objects[k]), slot.tree);
             slot.topology = mesh.topology;
             slot.build_ms = stats.ms;
             slot.quality = 1;
@@ -149,6 +149,23 @@ void ObjectTrees::apply_policy(const Frame& frame, std::span<const std::uint32_t
     }
     if (!to_worker.empty() && !m_background.busy()) hand_to_worker(frame, to_worker, reason, info);
     info.rebuild_reasons |= bit(reason);
+}
+
+void ObjectTrees::fit_wide(std::span<const std::uint32_t> paired) {
+    std::vector<std::uint8_t> now(m_trees.size(), 0);
+    for (const std::uint32_t object : paired) now[object] = 1;
+    std::vector<std::uint32_t> fit;
+    for (std::uint32_t object = 0; object < m_trees.size(); ++object) {
+        ObjectTree& slot = m_trees[object];
+        slot.paired_frames = now[object] ? slot.paired_frames + 1 : 0;
+        if (now[object] && !slot.tree.empty() && (slot.paired_frames >= 2 || wide_fitted(slot.tree))) {
+            fit.push_back(object);
+        }
+    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, fit.size(), 1),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t k = range.begin(); k != range.end(); ++k) bvh::fit_wide(m_trees[fit[k]].tree);
+    });
 }
 
 void ObjectTrees::hand_to_worker(const Frame& frame, std::span<const std::uint32_t> objects, RebuildReason reason,

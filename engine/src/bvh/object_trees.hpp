@@ -27,6 +27,8 @@ struct ObjectTree {
     bool self = false;      ///< tested against itself this frame and surface-like: its tree carries surface patches
     std::uint64_t surface_revision = ~std::uint64_t{0};  ///< the topology `surface` was measured on
     bool surface = false;   ///< surface_like(its triangles), for surface_revision
+    /// Frames in a row, up to this one, in which the object was in a pair with another one.
+    std::uint32_t paired_frames = 0;
 };
 
 /// The trees of every object, kept across frames. Engine thread only.
@@ -46,6 +48,13 @@ public:
     /// Asks the policy about every refit tree; rebuilds now or hands them to the worker.
     void apply_policy(const Frame& frame, std::span<const std::uint32_t> used, double detection_ms,
                       AabbFrameInfo& info);
+    /// Counts the frames in a row each object has been in a pair with another (`paired`:
+    /// this frame's), and fits the wide layouts (wide_tree.hpp) of those in such a pair for
+    /// a second frame in a row, or whose layout refit kept fitted, in parallel. A contact of
+    /// one frame does not pay for a layout: its first fit touches fresh memory, which cost
+    /// more than the wide traversal saved on short contacts (spread frames of data sets A, B
+    /// and D; docs/experiments/2026-11-26-wide-traversal.md).
+    void fit_wide(std::span<const std::uint32_t> paired);
     /// Hands every `objects` tree without a rebuild in flight to the worker (reason: the
     /// decision system's, recorded as k_rebuild_thesis). False when a batch is already in flight.
     bool start_rebuild(const Frame& frame, std::span<const std::uint32_t> objects, AabbFrameInfo& info);
@@ -69,6 +78,7 @@ private:
     RebuildPolicy m_policy;
     std::vector<ObjectTree> m_trees;
     BackgroundRebuild m_background;
+    TreeBuilder m_builder;  ///< the engine thread's builds (working memory kept between them)
 };
 
 }  // namespace collidescope::bvh

@@ -73,11 +73,35 @@ struct Bounds {
     }
 };
 
+// Writes a binary node's new box, rounded outward, into the wide slot that names it (the
+// wide layout, kept fitted on the way: wide_tree.hpp).
+void write_wide_slot(WideTree& wide, std::uint32_t node, const Bounds& bounds) {
+    const std::uint32_t at = wide.slot_of[node];
+    if (at == ~0u) return;
+    WideNode& target = wide.nodes[at >> 2];
+    const std::uint32_t slot = at & 3u;
+    target.lo[0][slot] = round_down(bounds.lo_xy[0]);
+    target.lo[1][slot] = round_down(bounds.lo_xy[1]);
+    target.lo[2][slot] = round_down(bounds.lo_z);
+    target.hi[0][slot] = round_up(bounds.hi_xy[0]);
+    target.hi[1][slot] = round_up(bounds.hi_xy[1]);
+    target.hi[2][slot] = round_up(bounds.hi_z);
+}
+
+void write_wide_triangle(WideTree& wide, std::uint32_t slot, const Bounds& bounds) {
+    wide.triangle_lo[0][slot] = round_down(bounds.lo_xy[0]);
+    wide.triangle_lo[1][slot] = round_down(bounds.lo_xy[1]);
+    wide.triangle_lo[2][slot] = round_down(bounds.lo_z);
+    wide.triangle_hi[0][slot] = round_up(bounds.hi_xy[0]);
+    wide.triangle_hi[1][slot] = round_up(bounds.hi_xy[1]);
+    wide.triangle_hi[2][slot] = round_up(bounds.hi_z);
+}
+
 // Fits an inner node from its children (already fitted), with one store, and returns its
 // node_cost from the registers. kSides (the tree has patches): its sides are its children's
-// common sides.
+// common sides. `wide` (may be null): the wide layout to keep fitted.
 template <bool kSides>
-double fit_inner(Tree& tree, std::uint32_t index) {
+double fit_inner(Tree& tree, std::uint32_t index, WideTree* wide) {
     Node& node = tree.nodes[index];
     if constexpr (kSides) {
         std::vector<std::uint8_t>& sides = tree.patches.sides;
@@ -87,6 +111,7 @@ double fit_inner(Tree& tree, std::uint32_t index) {
     bounds.grow(tree.nodes[index + 1].box);
     bounds.grow(tree.nodes[node.index].box);
     bounds.store(node.box);
+    if (wide != nullptr) write_wide_slot(*wide, index, bounds);
     return bounds.half_area();
 }
 
@@ -102,7 +127,7 @@ constexpr std::uint32_t kPrefetchSlots = 16;
 // Exact: min and max only, so a box is the same whatever the order.
 // kSides: also each leaf's patch sides (the triangles' common projected orientations).
 template <bool kSides>
-double fit_subtree(Tree& tree, const RefitSubtree& subtree, std::span<const Vec3> vertices) {
+double fit_subtree(Tree& tree, const RefitSubtree& subtree, std::span<const Vec3> vertices, WideTree* wide) {
     const RefitPlan& plan = tree.refit_plan;
     Node* nodes = tree.nodes.data();
     const TriIndices* tris = tree.leaf_triangles.data();
@@ -119,6 +144,7 @@ double fit_subtree(Tree& tree, const RefitSubtree& subtree, std::span<const Vec3
         const Vec3 &a = vertices[tris[k][0]], &b = vertices[tris[k][1]], &c = vertices[tris[k][2]];
         const Bounds triangle = Bounds::of(a, b, c);
         triangle.store(boxes[k]);
+        if (wide != nullptr) write_wide_triangle(*wide, k, triangle);
         bounds.grow(triangle);
         if constexpr (kSides) leaf_sides &= triangle_sides(a, b, c);
         ++count;
@@ -127,6 +153,7 @@ double fit_subtree(Tree& tree, const RefitSubtree& subtree, std::span<const Vec3
                 sides[*leaf] = leaf_sides;
                 leaf_sides = 0x3f;
             }
+            if (wide != nullptr) write_wide_slot(*wide, *leaf, bounds);
             bounds.store(nodes[*leaf++].box);
             cost += bounds.half_area() * count;
             bounds = Bounds::empty();
@@ -134,7 +161,7 @@ double fit_subtree(Tree& tree, const RefitSubtree& subtree, std::span<const Vec3
         }
     }
     for (std::uint32_t j = subtree.inner_end; j-- > subtree.inner_begin;) {
-        cost += fit_inner<kSides>(tree, plan.inner[j]);
+        cost += fit_inner<kSides>(tree, plan.inner[j], wide);
     }
     return cost;
 }
@@ -159,19 +186,26 @@ RefitStats refit(Tree& tree, std::span<const TriIndices> triangles, std::span<co
     (void)triangles;
     const RefitPlan& plan = tree.refit_plan;
     const bool with_sides = !tree.patches.empty();
+    // A wide layout fitted once since its collapse is kept fitted here, on the way (its
+    // separate fit cost as much as this refit on data set E).
+    WideTree* wide = tree.wide.usable && tree.wide.built_for == tree.builds && tree.wide.fitted_for != ~std::uint64_t{0}
+                         ? &tree.wide
+                         : nullptr;
     std::vector<double> subtree_cost(plan.subtrees.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, plan.subtrees.size(), 1),
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t s = range.begin(); s != range.end(); ++s) {
-            subtree_cost[s] = with_sides ? fit_subtree<true>(tree, plan.subtrees[s], vertices)
-                                         : fit_subtree<false>(tree, plan.subtrees[s], vertices);
+            subtree_cost[s] = with_sides ? fit_subtree<true>(tree, plan.subtrees[s], vertices, wide)
+                                         : fit_subtree<false>(tree, plan.subtrees[s], vertices, wide);
         }
     });
     double cost = 0;
     for (const double c : subtree_cost) cost += c;
     for (std::size_t k = plan.top.size(); k-- > 0;) {
-        cost += with_sides ? fit_inner<true>(tree, plan.top[k]) : fit_inner<false>(tree, plan.top[k]);
+        cost += with_sides ? fit_inner<true>(tree, plan.top[k], wide) : fit_inner<false>(tree, plan.top[k], wide);
     }
+    ++tree.fits;  // the boxes changed: a wide layout not fitted on the way is stale
+    if (wide != nullptr) wide->fitted_for = tree.fits;
     stats.nodes = static_cast<std::uint32_t>(tree.nodes.size());
     stats.sah_cost = normalise(tree, cost);
     stats.quality = tree.built_cost > 0 ? stats.sah_cost / tree.built_cost : 1.0;

@@ -30,12 +30,15 @@ std::vector<std::uint8_t> percolate_alive(const Tree& tree, std::span<const std:
 
 /// A unit of traversal work. obj_a < obj_b: node_a of A against node_b of B. obj_a == obj_b
 /// and node_a == node_b: self-traversal below that node. obj_a == obj_b, node_a != node_b:
-/// two disjoint subtrees of one object (the self rule's pairs i != j).
+/// two disjoint subtrees of one object (the self rule's pairs i != j). With `wide`, obj_a !=
+/// obj_b and the nodes are entries of the trees' wide layouts (wide_tree.hpp) whose boxes
+/// are known to overlap: step_wide.
 struct WorkItem {
     std::uint32_t obj_a = 0;
     std::uint32_t obj_b = 0;
     std::uint32_t node_a = 0;
     std::uint32_t node_b = 0;
+    bool wide = false;
 };
 
 /// What a traversal did. Counts do not depend on the thread count.
@@ -70,6 +73,23 @@ struct TraversalConfig {
 /// follow-up items onto `stack` (the larger node is split). traverse_pair.cpp.
 void step_pair(const WorkItem& item, std::span<const MeshView> meshes, std::vector<WorkItem>& stack,
                std::vector<TrianglePair>& candidates, TraversalStats& stats);
+
+/// The triangle pairs of two leaves whose closed boxes overlap, into `candidates` (two
+/// subtrees of one object drop the adjacent pairs adjacent_apart proves apart; alive marks
+/// are honoured). Counts box tests, not candidates. traverse_pair.cpp.
+void leaf_pair(const WorkItem& item, const MeshView& a, const Node& leaf_a, const MeshView& b, const Node& leaf_b,
+               std::vector<TrianglePair>& candidates, TraversalStats& stats);
+
+/// Processes one wide item: four child boxes of one tree against a box of the other at a
+/// time (one vector comparison), overlapping pairs onto `stack`, leaf pairs through
+/// leaf_pair. Both trees' wide layouts must be fitted. traverse_wide.cpp.
+void step_wide(const WorkItem& item, std::span<const MeshView> meshes, std::vector<WorkItem>& stack,
+               std::vector<TrianglePair>& candidates, TraversalStats& stats);
+
+/// Appends the root item of objects a and b (non-empty trees) to `roots`: the wide one when
+/// a != b, both trees' wide layouts are fitted and no alive marks are set (none at all when
+/// the roots' boxes do not overlap), else the binary one. traverse_wide.cpp.
+void add_pair_root(std::uint32_t a, std::uint32_t b, std::span<const MeshView> meshes, std::vector<WorkItem>& roots);
 
 /// Processes one self item (obj_a == obj_b, node_a == node_b): a leaf's own pairs i < j, or
 /// the children's self items and their pair item. traverse_self.cpp.

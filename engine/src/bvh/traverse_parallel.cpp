@@ -18,7 +18,9 @@ namespace {
 
 void step(const WorkItem& item, std::span<const MeshView> meshes, std::vector<WorkItem>& stack,
           std::vector<TrianglePair>& candidates, TraversalStats& stats) {
-    if (item.obj_a == item.obj_b && item.node_a == item.node_b) {
+    if (item.wide) {
+        step_wide(item, meshes, stack, candidates, stats);
+    } else if (item.obj_a == item.obj_b && item.node_a == item.node_b) {
         step_self(item, meshes, stack, candidates, stats);
     } else {
         step_pair(item, meshes, stack, candidates, stats);

@@ -1,0 +1,177 @@
+// The wide layout: collapse (after a build) and fit (after a refit).
+
+#include "bvh/wide_tree.hpp"
+
+#include "bvh/bvh.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <cstring>
+#include <limits>
+
+namespace collidescope::bvh {
+namespace {
+
+// Collapses the binary subtree below inner node `root` into wide nodes, iteratively (an LBVH
+// over equal codes can be deep).
+// False when a leaf is too large for a leaf entry (the layout is then unusable).
+bool collapse(const Tree& tree, WideTree& wide) {
+    wide.nodes.clear();
+    wide.slot_of.assign(tree.nodes.size(), ~0u);
+    struct Pending {
+        std::uint32_t binary;  // an inner node of the binary tree
+        std::uint32_t parent;  // the wide node whose child it becomes, or ~0 for the root
+        std::uint32_t slot;
+    };
+    std::vector<Pending> stack{{0, ~0u, 0}};
+    while (!stack.empty()) {
+        const Pending pending = stack.back();
+        stack.pop_back();
+        const auto index = static_cast<std::uint32_t>(wide.nodes.size());
+        if (pending.parent != ~0u) wide.nodes[pending.parent].child[pending.slot] = index;
+        std::array<std::uint32_t, 4> slots{pending.binary + 1, tree.nodes[pending.binary].index, ~0u, ~0u};
+        std::uint32_t used = 2;
+        while (used < 4) {  // open the inner child of largest surface
+            std::uint32_t best = ~0u;
+            double best_area = -1;
+            for (std::uint32_t s = 0; s < used; ++s) {
+                const Node& node = tree.nodes[slots[s]];
+                if (!node.is_leaf() && node.box.half_area() > best_area) {
+                    best = s;
+                    best_area = node.box.half_area();
+                }
+            }
+            if (best == ~0u) break;
+            const std::uint32_t opened = slots[best];
+            slots[best] = opened + 1;
+            slots[used++] = tree.nodes[opened].index;
+        }
+        WideNode node{};
+        node.child.fill(k_wide_empty);
+        wide.nodes.push_back(node);
+        for (std::uint32_t s = 0; s < used; ++s) {
+            wide.slot_of[slots[s]] = 4 * index + s;
+            const Node& child = tree.nodes[slots[s]];
+            if (child.is_leaf()) {
+                if (child.count > k_wide_max_leaf) return false;
+                wide.nodes[index].child[s] = wide_leaf(child.index, child.count);
+            } else {
+                stack.push_back({slots[s], index, s});
+            }
+        }
+    }
+    return true;
+}
+
+using Floats = float __attribute__((vector_size(16)));
+using Mask = std::int32_t __attribute__((vector_size(16)));
+
+Floats load(const float* lanes) {
+    Floats v;
+    std::memcpy(&v, lanes, sizeof v);
+    return v;
+}
+
+// Lane minimum and maximum (`a < b ? a : b`: minss, no branch; no NaN reaches a fit).
+float lane_min(Floats v) {
+    const float a = v[0] < v[1] ? v[0] : v[1], b = v[2] < v[3] ? v[2] : v[3];
+    return a < b ? a : b;
+}
+float lane_max(Floats v) {
+    const float a = v[0] > v[1] ? v[0] : v[1], b = v[2] > v[3] ? v[2] : v[3];
+    return a > b ? a : b;
+}
+
+// Fits wide node `w` from its children: leaves from the triangles' float boxes (the four
+// slots from the first, the ones past the count masked off; leaves of more than four
+// triangles take several loads), wide children (fitted before it: they come after it in
+// the array) from their four boxes.
+void fit_node(WideTree& wide, std::size_t w) {
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    const Floats empty_lo = {inf, inf, inf, inf}, empty_hi = -empty_lo;
+    const Mask lane = {0, 1, 2, 3};
+    WideNode& node = wide.nodes[w];
+    for (int s = 0; s < 4; ++s) {
+        Floats lo[3] = {empty_lo, empty_lo, empty_lo}, hi[3] = {empty_hi, empty_hi, empty_hi};
+        const std::uint32_t child = node.child[s];
+        if (is_wide_leaf(child)) {
+            const std::uint32_t first = wide_leaf_first(child), end = first + wide_leaf_count(child);
+            for (std::uint32_t group = first; group < end; group += 4) {
+                const auto left = static_cast<std::int32_t>(end - group);
+                const Mask inside = lane < Mask{left, left, left, left};
+                for (int k = 0; k < 3; ++k) {
+                    const Floats l = inside ? load(&wide.triangle_lo[k][group]) : empty_lo;
+                    const Floats h = inside ? load(&wide.triangle_hi[k][group]) : empty_hi;
+                    lo[k] = l < lo[k] ? l : lo[k];
+                    hi[k] = h > hi[k] ? h : hi[k];
+                }
+            }
+        } else if (child != k_wide_empty) {
+            const WideNode& below = wide.nodes[child];
+            for (int k = 0; k < 3; ++k) {
+                lo[k] = load(below.lo[k].data());
+                hi[k] = load(below.hi[k].data());
+            }
+        }
+        for (int k = 0; k < 3; ++k) {
+            node.lo[k][s] = lane_min(lo[k]);
+            node.hi[k][s] = lane_max(hi[k]);
+        }
+    }
+}
+
+}  // namespace
+
+std::uint32_t wide_root(const Tree& tree) {
+    const Node& root = tree.nodes[0];
+    return root.is_leaf() ? wide_leaf(root.index, root.count) : 0;
+}
+
+bool wide_fitted(const Tree& tree) {
+    return !tree.empty() && tree.wide.usable && tree.wide.built_for == tree.builds && tree.wide.fitted_for == tree.fits;
+}
+
+void fit_wide(Tree& tree) {
+    WideTree& wide = tree.wide;
+    if (tree.empty()) {
+        wide = WideTree{};
+        return;
+    }
+    if (wide.built_for != tree.builds) {
+        const Node& root = tree.nodes[0];
+        if (tree.leaf_boxes.size() >= k_wide_max_slots) {
+            wide.usable = false;
+        } else if (root.is_leaf()) {
+            wide.nodes.clear();
+            wide.slot_of.assign(tree.nodes.size(), ~0u);
+            wide.usable = root.count <= k_wide_max_leaf;
+        } else {
+            wide.usable = collapse(tree, wide);
+        }
+        wide.built_for = tree.builds;
+        wide.fitted_for = ~std::uint64_t{0};
+    }
+    if (!wide.usable || wide.fitted_for == tree.fits) return;
+    const std::size_t slots = tree.leaf_boxes.size();
+    for (int k = 0; k < 3; ++k) {
+        wide.triangle_lo[k].resize(slots + 3);
+        wide.triangle_hi[k].resize(slots + 3);
+        for (std::size_t t = slots; t < slots + 3; ++t) {  // padding: empty boxes, which overlap nothing
+            wide.triangle_lo[k][t] = std::numeric_limits<float>::infinity();
+            wide.triangle_hi[k][t] = -std::numeric_limits<float>::infinity();
+        }
+    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, slots, 8192), [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t t = range.begin(); t != range.end(); ++t) {
+            for (int k = 0; k < 3; ++k) {
+                wide.triangle_lo[k][t] = round_down(tree.leaf_boxes[t].lo[k]);
+                wide.triangle_hi[k][t] = round_up(tree.leaf_boxes[t].hi[k]);
+            }
+        }
+    });
+    for (std::size_t w = wide.nodes.size(); w-- > 0;) fit_node(wide, w);
+    wide.fitted_for = tree.fits;
+}
+
+}  // namespace collidescope::bvh
