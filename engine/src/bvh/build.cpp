@@ -157,7 +157,15 @@ BuildStats build_into(std::span<const TriIndices> triangles, std::span<const Vec
     } else {
         tree.patches = SurfacePatches{};
     }
+    // A tree whose wide layout was in use gets it again at once, fitted by the refit below on
+    // the way (a separate fit after every rebuild cost a third of a rebuild).
+    const bool wide_in_use = tree.wide.usable && tree.wide.built_for == tree.builds &&
+                             tree.wide.fitted_for != ~std::uint64_t{0};
     ++tree.builds;
+    if (wide_in_use) {
+        prepare_wide(tree);
+        if (tree.wide.usable) tree.wide.fitted_for = 0;  // lets refit write through (refit.cpp)
+    }
     const RefitStats fitted = refit(tree, triangles, vertices);
     tree.built_cost = fitted.sah_cost;
     stats.nodes = static_cast<std::uint32_t>(tree.nodes.size());

@@ -13,8 +13,10 @@
 namespace collidescope::bvh {
 namespace {
 
-// Collapses the binary subtree below inner node `root` into wide nodes, iteratively (an LBVH
-// over equal codes can be deep).
+// Collapses the binary tree into wide nodes, iteratively (an LBVH over equal codes can be
+// deep): a wide node takes its binary node's grandchildren, or a child itself where that is
+// a leaf (two levels merged, as Embree's BVH4 builders do from a binary split). No box is
+// read, so a build collapses before its refit and the refit fits the layout on the way.
 // False when a leaf is too large for a leaf entry (the layout is then unusable).
 bool collapse(const Tree& tree, WideTree& wide) {
     wide.nodes.clear();
@@ -30,25 +32,23 @@ bool collapse(const Tree& tree, WideTree& wide) {
         stack.pop_back();
         const auto index = static_cast<std::uint32_t>(wide.nodes.size());
         if (pending.parent != ~0u) wide.nodes[pending.parent].child[pending.slot] = index;
-        std::array<std::uint32_t, 4> slots{pending.binary + 1, tree.nodes[pending.binary].index, ~0u, ~0u};
-        std::uint32_t used = 2;
-        while (used < 4) {  // open the inner child of largest surface
-            std::uint32_t best = ~0u;
-            double best_area = -1;
-            for (std::uint32_t s = 0; s < used; ++s) {
-                const Node& node = tree.nodes[slots[s]];
-                if (!node.is_leaf() && node.box.half_area() > best_area) {
-                    best = s;
-                    best_area = node.box.half_area();
-                }
+        std::array<std::uint32_t, 4> slots{};
+        std::uint32_t used = 0;
+        for (const std::uint32_t child : {pending.binary + 1, tree.nodes[pending.binary].index}) {
+            const Node& node = tree.nodes[child];
+            if (node.is_leaf()) {
+                slots[used++] = child;
+            } else {
+                slots[used++] = child + 1;
+                slots[used++] = node.index;
             }
-            if (best == ~0u) break;
-            const std::uint32_t opened = slots[best];
-            slots[best] = opened + 1;
-            slots[used++] = tree.nodes[opened].index;
         }
         WideNode node{};
         node.child.fill(k_wide_empty);
+        for (int k = 0; k < 3; ++k) {  // empty boxes until fitted; unused slots stay empty
+            node.lo[k].fill(std::numeric_limits<float>::infinity());
+            node.hi[k].fill(-std::numeric_limits<float>::infinity());
+        }
         wide.nodes.push_back(node);
         for (std::uint32_t s = 0; s < used; ++s) {
             wide.slot_of[slots[s]] = 4 * index + s;
@@ -132,27 +132,21 @@ bool wide_fitted(const Tree& tree) {
     return !tree.empty() && tree.wide.usable && tree.wide.built_for == tree.builds && tree.wide.fitted_for == tree.fits;
 }
 
-void fit_wide(Tree& tree) {
+void prepare_wide(Tree& tree) {
     WideTree& wide = tree.wide;
-    if (tree.empty()) {
-        wide = WideTree{};
-        return;
+    wide.built_for = tree.builds;
+    wide.fitted_for = ~std::uint64_t{0};
+    const Node& root = tree.nodes[0];
+    if (tree.leaf_boxes.size() >= k_wide_max_slots) {
+        wide.usable = false;
+    } else if (root.is_leaf()) {
+        wide.nodes.clear();
+        wide.slot_of.assign(tree.nodes.size(), ~0u);
+        wide.usable = root.count <= k_wide_max_leaf;
+    } else {
+        wide.usable = collapse(tree, wide);
     }
-    if (wide.built_for != tree.builds) {
-        const Node& root = tree.nodes[0];
-        if (tree.leaf_boxes.size() >= k_wide_max_slots) {
-            wide.usable = false;
-        } else if (root.is_leaf()) {
-            wide.nodes.clear();
-            wide.slot_of.assign(tree.nodes.size(), ~0u);
-            wide.usable = root.count <= k_wide_max_leaf;
-        } else {
-            wide.usable = collapse(tree, wide);
-        }
-        wide.built_for = tree.builds;
-        wide.fitted_for = ~std::uint64_t{0};
-    }
-    if (!wide.usable || wide.fitted_for == tree.fits) return;
+    if (!wide.usable) return;
     const std::size_t slots = tree.leaf_boxes.size();
     for (int k = 0; k < 3; ++k) {
         wide.triangle_lo[k].resize(slots + 3);
@@ -162,6 +156,17 @@ void fit_wide(Tree& tree) {
             wide.triangle_hi[k][t] = -std::numeric_limits<float>::infinity();
         }
     }
+}
+
+void fit_wide(Tree& tree) {
+    WideTree& wide = tree.wide;
+    if (tree.empty()) {
+        wide = WideTree{};
+        return;
+    }
+    if (wide.built_for != tree.builds) prepare_wide(tree);
+    if (!wide.usable || wide.fitted_for == tree.fits) return;
+    const std::size_t slots = tree.leaf_boxes.size();
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, slots, 8192), [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t t = range.begin(); t != range.end(); ++t) {
             for (int k = 0; k < 3; ++k) {

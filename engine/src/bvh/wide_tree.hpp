@@ -69,8 +69,12 @@ std::uint32_t wide_root(const Tree& tree);
 /// True when `tree.wide` is usable and matches the tree's current build and boxes.
 bool wide_fitted(const Tree& tree);
 
-/// Brings `tree.wide` up to date: collapses the binary tree again after a build (each wide
-/// node opens the inner child of largest surface until it has four children), then rounds
+/// Collapses a non-empty tree's binary nodes into the wide layout (each wide node takes its
+/// binary node's grandchildren, or a child that is a leaf) and sizes its arrays, for the
+/// tree's current build; reads no box. The layout is not fitted yet.
+void prepare_wide(Tree& tree);
+
+/// Brings `tree.wide` up to date: prepares it again after a build, then rounds
 /// the triangles' boxes outward (in parallel) and fits the wide nodes bottom up from them: a
 /// leaf child is the union of its triangles' float boxes, a wide child the union of its four.
 /// Unions of outward-rounded boxes contain the double boxes. From then on refit keeps the
