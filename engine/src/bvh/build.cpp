@@ -120,8 +120,8 @@ std::uint32_t depth_below(const Tree& tree, std::uint32_t node) {
     return 1 + std::max(depth_below(tree, node + 1), depth_below(tree, n.index));
 }
 
-// The build, writing into `tree`'s storage and `scratch` (both reused: a rebuild touches no
-// fresh memory, whose first-touch page faults were most of a rebuild's time on the CI VM).
+// The build into `tree` (allocated afresh; its wide layout kept) with `scratch` (reused: a
+// rebuild through a TreeBuilder allocates no working memory).
 BuildStats build_into(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
                       const BuildConfig& config, Tree& tree, detail::BuildScratch& scratch) {
     const Stopwatch stopwatch;
@@ -131,6 +131,18 @@ BuildStats build_into(std::span<const TriIndices> triangles, std::span<const Vec
         return stats;
     }
     const auto n = static_cast<std::uint32_t>(triangles.size());
+    {
+        // A fresh tree, keeping only the wide layout and the counters that key it. Writing
+        // into the old tree's storage instead was slower wherever freed memory is kept
+        // (keep_freed_memory, as the command and the peer bench run): data set D's rebuilds
+        // 3.6-3.8 against 2.4-2.6 ms a frame (docs/experiments/2026-11-26-wide-traversal.md).
+        WideTree wide = std::move(tree.wide);
+        const std::uint64_t builds = tree.builds, fits = tree.fits;
+        tree = Tree{};
+        tree.wide = std::move(wide);
+        tree.builds = builds;
+        tree.fits = fits;
+    }
     detail::BuildInput& input = scratch.input;
     detail::make_build_input(triangles, vertices, config.builder == Builder::Sah, input);
     detail::RawTree& raw = scratch.raw;

@@ -190,9 +190,10 @@ struct BuildStats {
     double sah_cost = 0;         ///< sah_cost of the new tree
 };
 
-/// Builds `tree` from scratch over every triangle of the mesh, in parallel (TBB), into the
-/// storage `tree` already has. The spans are read during the call only. Deterministic: the
-/// same input gives the same tree for any thread count, whatever `tree` held before.
+/// Builds `tree` from scratch over every triangle of the mesh, in parallel (TBB). The spans
+/// are read during the call only. Deterministic: the same input gives the same tree for any
+/// thread count, whatever `tree` held before. A wide layout `tree` had in use is collapsed
+/// again within the build (wide_tree.hpp).
 BuildStats build_tree(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
                       const BuildConfig& config, Tree& tree);
 
@@ -203,8 +204,8 @@ struct BuildScratch;
 /// build_tree for a caller that builds again and again (the `aabb` method's rebuilds): it
 /// keeps the builds' working memory (per-triangle centroids, Morton keys, the raw tree) for
 /// the next build instead of freeing it. Memory touched for the first time was most of a
-/// rebuild's time on the CI VM (a 22,598-triangle build: 11.3 ms with 668 first-touch page
-/// faults, 1.8 ms warm; docs/experiments/2026-11-26-rebuild-memory.md). Thread-safe: builds
+/// build's time on the CI VM (a 22,598-triangle build: 11.3 ms with 668 first-touch page
+/// faults, 1.8 ms warm; docs/experiments/2026-11-26-wide-traversal.md). Thread-safe: builds
 /// running at once each take their own working memory.
 class TreeBuilder {
 public:

@@ -88,15 +88,6 @@ void write_wide_slot(WideTree& wide, std::uint32_t node, const Bounds& bounds) {
     target.hi[2][slot] = round_up(bounds.hi_z);
 }
 
-void write_wide_triangle(WideTree& wide, std::uint32_t slot, const Bounds& bounds) {
-    wide.triangle_lo[0][slot] = round_down(bounds.lo_xy[0]);
-    wide.triangle_lo[1][slot] = round_down(bounds.lo_xy[1]);
-    wide.triangle_lo[2][slot] = round_down(bounds.lo_z);
-    wide.triangle_hi[0][slot] = round_up(bounds.hi_xy[0]);
-    wide.triangle_hi[1][slot] = round_up(bounds.hi_xy[1]);
-    wide.triangle_hi[2][slot] = round_up(bounds.hi_z);
-}
-
 // Fits an inner node from its children (already fitted), with one store, and returns its
 // node_cost from the registers. kSides (the tree has patches): its sides are its children's
 // common sides. `wide` (may be null): the wide layout to keep fitted.
@@ -144,7 +135,6 @@ double fit_subtree(Tree& tree, const RefitSubtree& subtree, std::span<const Vec3
         const Vec3 &a = vertices[tris[k][0]], &b = vertices[tris[k][1]], &c = vertices[tris[k][2]];
         const Bounds triangle = Bounds::of(a, b, c);
         triangle.store(boxes[k]);
-        if (wide != nullptr) write_wide_triangle(*wide, k, triangle);
         bounds.grow(triangle);
         if constexpr (kSides) leaf_sides &= triangle_sides(a, b, c);
         ++count;

@@ -35,17 +35,13 @@ struct FloatBox {
     float hi[3];
 };
 
-// A leaf's float box: the union of its triangles' (the slots past its count masked off).
-FloatBox leaf_box(const WideTree& wide, std::uint32_t entry) {
+// A leaf's float box, rounded outward from the union of its triangles' double boxes.
+FloatBox leaf_box(const Tree& tree, std::uint32_t entry) {
     const std::uint32_t first = wide_leaf_first(entry), end = first + wide_leaf_count(entry);
-    FloatBox box{{k_inf, k_inf, k_inf}, {-k_inf, -k_inf, -k_inf}};
-    for (std::uint32_t t = first; t < end; ++t) {
-        for (int k = 0; k < 3; ++k) {
-            box.lo[k] = wide.triangle_lo[k][t] < box.lo[k] ? wide.triangle_lo[k][t] : box.lo[k];
-            box.hi[k] = wide.triangle_hi[k][t] > box.hi[k] ? wide.triangle_hi[k][t] : box.hi[k];
-        }
-    }
-    return box;
+    Aabb box = tree.leaf_boxes[first];
+    for (std::uint32_t t = first + 1; t < end; ++t) box.grow(tree.leaf_boxes[t]);
+    return {{round_down(box.lo[0]), round_down(box.lo[1]), round_down(box.lo[2])},
+            {round_up(box.hi[0]), round_up(box.hi[1]), round_up(box.hi[2])}};
 }
 
 FloatBox child_box(const WideNode& node, int s) {
@@ -61,32 +57,17 @@ unsigned overlap_bits(const WideNode& node, const FloatBox& box) {
 }
 
 
-/// Bit j set when triangle slot `slot + j` of `wide` overlaps `box` (the slots after a leaf's
-/// last are masked off by the caller).
-unsigned triangle_bits(const WideTree& wide, std::uint32_t slot, const FloatBox& box) {
-    Mask m = (load(&wide.triangle_lo[0][slot]) <= splat(box.hi[0])) & (splat(box.lo[0]) <= load(&wide.triangle_hi[0][slot]));
-    m &= (load(&wide.triangle_lo[1][slot]) <= splat(box.hi[1])) & (splat(box.lo[1]) <= load(&wide.triangle_hi[1][slot]));
-    m &= (load(&wide.triangle_lo[2][slot]) <= splat(box.hi[2])) & (splat(box.lo[2]) <= load(&wide.triangle_hi[2][slot]));
-    return static_cast<unsigned>((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8));
-}
-
-// Two leaves of different objects: each triangle of A's against B's (at most four) in one
-// vector test on the float boxes, then the double boxes of the pairs that pass, so the
-// candidates are exactly the pairs whose closed double boxes overlap.
+// Two leaves of different objects: every triangle pair on the double boxes (the leaf entries
+// carry the slot ranges, so no binary node is read), the candidates exactly the pairs whose
+// closed boxes overlap.
 void wide_leaf_pair(const WorkItem& item, const Tree& a, const Tree& b, std::vector<TrianglePair>& candidates,
                     TraversalStats& stats) {
-    const WideTree& wa = a.wide;
     const std::uint32_t first_a = wide_leaf_first(item.node_a), count_a = wide_leaf_count(item.node_a);
     const std::uint32_t first_b = wide_leaf_first(item.node_b), count_b = wide_leaf_count(item.node_b);
-    const std::uint32_t end_b = first_b + count_b;
     for (std::uint32_t i = first_a; i < first_a + count_a; ++i) {
-        const FloatBox box{{wa.triangle_lo[0][i], wa.triangle_lo[1][i], wa.triangle_lo[2][i]},
-                           {wa.triangle_hi[0][i], wa.triangle_hi[1][i], wa.triangle_hi[2][i]}};
-        for (std::uint32_t group = first_b; group < end_b; group += 4) {  // one group unless leaves exceed 4
-            const unsigned lanes = end_b - group >= 4 ? 0xfu : (1u << (end_b - group)) - 1;
-            for (unsigned bits = triangle_bits(b.wide, group, box) & lanes; bits != 0; bits &= bits - 1) {
-                const std::uint32_t j = group + static_cast<std::uint32_t>(std::countr_zero(bits));
-                if (!overlaps(a.leaf_boxes[i], b.leaf_boxes[j])) continue;
+        const Aabb& box = a.leaf_boxes[i];
+        for (std::uint32_t j = first_b; j < first_b + count_b; ++j) {
+            if (overlaps(box, b.leaf_boxes[j])) {
                 candidates.push_back({item.obj_a, a.triangle_ids[i], item.obj_b, b.triangle_ids[j]});
             }
         }
@@ -116,7 +97,7 @@ void step_wide(const WorkItem& item, std::span<const MeshView> meshes, std::vect
     if (leaf_b) {  // A's four children against B's leaf
         const WideNode& x = tree_a.wide.nodes[item.node_a];
         stats.box_tests += 4;
-        for (unsigned bits = overlap_bits(x, leaf_box(tree_b.wide, item.node_b)); bits != 0; bits &= bits - 1) {
+        for (unsigned bits = overlap_bits(x, leaf_box(tree_b, item.node_b)); bits != 0; bits &= bits - 1) {
             push(x.child[std::countr_zero(bits)], item.node_b);
         }
         return;
@@ -124,7 +105,7 @@ void step_wide(const WorkItem& item, std::span<const MeshView> meshes, std::vect
     const WideNode& y = tree_b.wide.nodes[item.node_b];
     if (leaf_a) {  // A's leaf against B's four children
         stats.box_tests += 4;
-        const FloatBox box = leaf_box(tree_a.wide, item.node_a);
+        const FloatBox box = leaf_box(tree_a, item.node_a);
         for (unsigned bits = overlap_bits(y, box); bits != 0; bits &= bits - 1) {
             push(item.node_a, y.child[std::countr_zero(bits)]);
         }

@@ -4,9 +4,6 @@
 
 #include "bvh/bvh.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <cstring>
 #include <limits>
 
@@ -20,6 +17,9 @@ namespace {
 // False when a leaf is too large for a leaf entry (the layout is then unusable).
 bool collapse(const Tree& tree, WideTree& wide) {
     wide.nodes.clear();
+    // At most one wide node per binary inner node: reserved (untouched until written), so the
+    // vector never grows by copying into fresh memory.
+    wide.nodes.reserve(tree.nodes.size() / 2);
     wide.slot_of.assign(tree.nodes.size(), ~0u);
     struct Pending {
         std::uint32_t binary;  // an inner node of the binary tree
@@ -65,7 +65,6 @@ bool collapse(const Tree& tree, WideTree& wide) {
 }
 
 using Floats = float __attribute__((vector_size(16)));
-using Mask = std::int32_t __attribute__((vector_size(16)));
 
 Floats load(const float* lanes) {
     Floats v;
@@ -83,40 +82,28 @@ float lane_max(Floats v) {
     return a > b ? a : b;
 }
 
-// Fits wide node `w` from its children: leaves from the triangles' float boxes (the four
-// slots from the first, the ones past the count masked off; leaves of more than four
-// triangles take several loads), wide children (fitted before it: they come after it in
-// the array) from their four boxes.
-void fit_node(WideTree& wide, std::size_t w) {
-    constexpr float inf = std::numeric_limits<float>::infinity();
-    const Floats empty_lo = {inf, inf, inf, inf}, empty_hi = -empty_lo;
-    const Mask lane = {0, 1, 2, 3};
+// Fits wide node `w` from its children: leaves from their triangles' double boxes, rounded
+// outward; wide children (fitted before it: they come after it in the array) as the union
+// of their four boxes.
+void fit_node(const Tree& tree, WideTree& wide, std::size_t w) {
     WideNode& node = wide.nodes[w];
     for (int s = 0; s < 4; ++s) {
-        Floats lo[3] = {empty_lo, empty_lo, empty_lo}, hi[3] = {empty_hi, empty_hi, empty_hi};
         const std::uint32_t child = node.child[s];
+        if (child == k_wide_empty) continue;  // stays empty
         if (is_wide_leaf(child)) {
             const std::uint32_t first = wide_leaf_first(child), end = first + wide_leaf_count(child);
-            for (std::uint32_t group = first; group < end; group += 4) {
-                const auto left = static_cast<std::int32_t>(end - group);
-                const Mask inside = lane < Mask{left, left, left, left};
-                for (int k = 0; k < 3; ++k) {
-                    const Floats l = inside ? load(&wide.triangle_lo[k][group]) : empty_lo;
-                    const Floats h = inside ? load(&wide.triangle_hi[k][group]) : empty_hi;
-                    lo[k] = l < lo[k] ? l : lo[k];
-                    hi[k] = h > hi[k] ? h : hi[k];
-                }
+            Aabb box = tree.leaf_boxes[first];
+            for (std::uint32_t t = first + 1; t < end; ++t) box.grow(tree.leaf_boxes[t]);
+            for (int k = 0; k < 3; ++k) {
+                node.lo[k][s] = round_down(box.lo[k]);
+                node.hi[k][s] = round_up(box.hi[k]);
             }
-        } else if (child != k_wide_empty) {
+        } else {
             const WideNode& below = wide.nodes[child];
             for (int k = 0; k < 3; ++k) {
-                lo[k] = load(below.lo[k].data());
-                hi[k] = load(below.hi[k].data());
+                node.lo[k][s] = lane_min(load(below.lo[k].data()));
+                node.hi[k][s] = lane_max(load(below.hi[k].data()));
             }
-        }
-        for (int k = 0; k < 3; ++k) {
-            node.lo[k][s] = lane_min(lo[k]);
-            node.hi[k][s] = lane_max(hi[k]);
         }
     }
 }
@@ -146,16 +133,6 @@ void prepare_wide(Tree& tree) {
     } else {
         wide.usable = collapse(tree, wide);
     }
-    if (!wide.usable) return;
-    const std::size_t slots = tree.leaf_boxes.size();
-    for (int k = 0; k < 3; ++k) {
-        wide.triangle_lo[k].resize(slots + 3);
-        wide.triangle_hi[k].resize(slots + 3);
-        for (std::size_t t = slots; t < slots + 3; ++t) {  // padding: empty boxes, which overlap nothing
-            wide.triangle_lo[k][t] = std::numeric_limits<float>::infinity();
-            wide.triangle_hi[k][t] = -std::numeric_limits<float>::infinity();
-        }
-    }
 }
 
 void fit_wide(Tree& tree) {
@@ -166,16 +143,7 @@ void fit_wide(Tree& tree) {
     }
     if (wide.built_for != tree.builds) prepare_wide(tree);
     if (!wide.usable || wide.fitted_for == tree.fits) return;
-    const std::size_t slots = tree.leaf_boxes.size();
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, slots, 8192), [&](const tbb::blocked_range<std::size_t>& range) {
-        for (std::size_t t = range.begin(); t != range.end(); ++t) {
-            for (int k = 0; k < 3; ++k) {
-                wide.triangle_lo[k][t] = round_down(tree.leaf_boxes[t].lo[k]);
-                wide.triangle_hi[k][t] = round_up(tree.leaf_boxes[t].hi[k]);
-            }
-        }
-    });
-    for (std::size_t w = wide.nodes.size(); w-- > 0;) fit_node(wide, w);
+    for (std::size_t w = wide.nodes.size(); w-- > 0;) fit_node(tree, wide, w);
     wide.fitted_for = tree.fits;
 }
 

@@ -53,11 +53,6 @@ struct WideTree {
     /// Per binary node: 4 * wide node + slot of the wide slot it fills, or ~0 (refit writes
     /// each box it computes there, keeping the layout fitted once fit_wide has fitted it).
     std::vector<std::uint32_t> slot_of;
-    /// Every triangle's box in single precision, rounded outward, by axis, in leaf order
-    /// (slot k is Tree::leaf_boxes[k]), with three slots of padding at the end: a leaf's four
-    /// slots load as one vector whatever its count.
-    std::array<std::vector<float>, 3> triangle_lo;
-    std::array<std::vector<float>, 3> triangle_hi;
     bool usable = false;  ///< false: the tree's leaves or size do not fit the leaf entries
     std::uint64_t built_for = ~std::uint64_t{0};   ///< the Tree::builds it was collapsed from
     std::uint64_t fitted_for = ~std::uint64_t{0};  ///< the Tree::fits its boxes come from
@@ -70,16 +65,16 @@ std::uint32_t wide_root(const Tree& tree);
 bool wide_fitted(const Tree& tree);
 
 /// Collapses a non-empty tree's binary nodes into the wide layout (each wide node takes its
-/// binary node's grandchildren, or a child that is a leaf) and sizes its arrays, for the
-/// tree's current build; reads no box. The layout is not fitted yet.
+/// binary node's grandchildren, or a child that is a leaf), for the tree's current build;
+/// reads no box. The layout is not fitted yet.
 void prepare_wide(Tree& tree);
 
-/// Brings `tree.wide` up to date: prepares it again after a build, then rounds
-/// the triangles' boxes outward (in parallel) and fits the wide nodes bottom up from them: a
-/// leaf child is the union of its triangles' float boxes, a wide child the union of its four.
-/// Unions of outward-rounded boxes contain the double boxes. From then on refit keeps the
-/// layout fitted on the way (refit.cpp) until the next build; a tree refit before its first
-/// fit is fitted here again.
+/// Brings `tree.wide` up to date: prepares it again after a build, then fits the wide nodes
+/// bottom up: a leaf child from its triangles' double boxes (Tree::leaf_boxes), rounded
+/// outward; a wide child as the union of its four float boxes (which contains the double
+/// boxes below). From then on refit keeps the layout fitted on the way (refit.cpp), and a
+/// build of a tree whose layout is in use prepares it within the build; a tree refit before
+/// its first fit is fitted here.
 void fit_wide(Tree& tree);
 
 /// The largest float not above `value`, and the smallest not below it (exact_round_up).
