@@ -139,6 +139,7 @@ TEST(WideTraverse, CandidatesAreTheBinaryTraversalsAndTheOverlappingBoxes) {
             config.builder = builder;
             // 1 to 8 triangles a leaf (past 4: several vector loads); 12: no wide layout.
             config.max_leaf_size = round == 7 ? 12 : 1 + static_cast<std::uint32_t>(round);
+            config.refit_grain = round % 2 == 0 ? 32 : 2048;  // many refit subtrees and top nodes, or one
             const bool wide_layout = config.max_leaf_size <= k_wide_max_leaf;
             Tree tree_a;
             Tree tree_b;
@@ -201,6 +202,65 @@ TEST(WideTraverse, CandidatesAreTheBinaryTraversalsAndTheOverlappingBoxes) {
         }
     }
     EXPECT_GE(with_candidates, 30);
+}
+
+// Wide candidates of two meshes against the all-pairs box filter, both orders.
+void expect_wide_candidates(const MeshData& a, const MeshData& b, BuildConfig config) {
+    Tree tree_a;
+    Tree tree_b;
+    build_tree(a.triangles, a.vertices, config, tree_a);
+    build_tree(b.triangles, b.vertices, config, tree_b);
+    fit_wide(tree_a);
+    fit_wide(tree_b);
+    expect_wide_layout_fits(tree_a);
+    expect_wide_layout_fits(tree_b);
+    for (const bool swapped : {false, true}) {
+        SCOPED_TRACE(swapped ? "swapped" : "in order");
+        const MeshData& x = swapped ? b : a;
+        const MeshData& y = swapped ? a : b;
+        const Tree& tx = swapped ? tree_b : tree_a;
+        const Tree& ty = swapped ? tree_a : tree_b;
+        const std::vector<MeshView> views{{&tx, x.triangles, x.vertices}, {&ty, y.triangles, y.vertices}};
+        std::vector<WorkItem> roots;
+        add_pair_root(0, 1, views, roots);
+        ASSERT_EQ(roots.size(), 1u);
+        EXPECT_TRUE(roots[0].wide);
+        std::vector<TrianglePair> candidates;
+        traverse(roots, views, {}, candidates);
+        std::sort(candidates.begin(), candidates.end());
+        const std::vector<TrianglePair> expected = testing::box_pairs(x, &y);
+        EXPECT_FALSE(expected.empty());
+        EXPECT_EQ(candidates, expected);
+    }
+}
+
+TEST(WideTraverse, RootLeavesAndCoordinatesPastFloatRange) {
+    const std::uint64_t seed = 45;
+    std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
+    std::mt19937_64 rng(seed);
+    // A tree that is one leaf (a root entry that is a leaf) against a larger one.
+    const MeshData sheet = testing::crumpled_sheet(rng, 16, 1.0, true);
+    MeshData tiny;
+    for (int k = 0; k < 3; ++k) {
+        const auto base = static_cast<std::uint32_t>(tiny.vertices.size());
+        tiny.vertices.insert(tiny.vertices.end(), {Vec3(2.0 + k, 2, -2), Vec3(3.0 + k, 3, 2), Vec3(2.5 + k, 6, 0)});
+        tiny.triangles.push_back({base, base + 1, base + 2});
+    }
+    {
+        SCOPED_TRACE("a root leaf");
+        expect_wide_candidates(tiny, sheet, BuildConfig{});
+    }
+    // Coordinates past float range on every axis: boxes round to infinities and overlap
+    // every float box, the unused slots' empty boxes included (those must not be followed).
+    const auto huge = [](MeshData mesh) {
+        for (Vec3& v : mesh.vertices) v = (v - Vec3(4, 4, 4)) * 1e39;
+        return mesh;
+    };
+    {
+        SCOPED_TRACE("past float range");
+        expect_wide_candidates(huge(testing::grid_soup(rng, 300, 8)), huge(testing::grid_soup(rng, 250, 8)),
+                               BuildConfig{});
+    }
 }
 
 TEST(WideTraverse, BoxesApartGiveNoRootAndMarksKeepTheBinaryPath) {

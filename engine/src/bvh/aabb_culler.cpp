@@ -39,7 +39,8 @@ std::vector<std::uint32_t> self_objects(const FrameContext& context) {
     return objects;
 }
 
-// Objects in some pair with another object: their trees' wide layouts are fitted.
+// Objects in some pair with another object this frame (ObjectTrees::fit_wide decides which
+// of them get a wide layout).
 std::vector<std::uint32_t> paired_objects(const FrameContext& context) {
     std::vector<bool> paired(context.frame.objects.size(), false);
     for (const ObjectPair& pair : context.object_pairs) {

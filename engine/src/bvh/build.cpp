@@ -157,7 +157,7 @@ BuildStats build_into(std::span<const TriIndices> triangles, std::span<const Vec
     }
     std::uint32_t depth = 0;
     to_preorder(raw, tree.nodes, depth);
-    tree.triangle_ids.swap(raw.ids);  // the old ids' storage is the next build's
+    tree.triangle_ids.swap(raw.ids);  // the fresh tree takes them; the next build allocates ids again
     tree.leaf_triangles.resize(n);
     tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 8192), [&](const tbb::blocked_range<std::uint32_t>& r) {
         for (std::uint32_t k = r.begin(); k != r.end(); ++k) tree.leaf_triangles[k] = triangles[tree.triangle_ids[k]];

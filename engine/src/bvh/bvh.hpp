@@ -192,8 +192,8 @@ struct BuildStats {
 
 /// Builds `tree` from scratch over every triangle of the mesh, in parallel (TBB). The spans
 /// are read during the call only. Deterministic: the same input gives the same tree for any
-/// thread count, whatever `tree` held before. A wide layout `tree` had in use is collapsed
-/// again within the build (wide_tree.hpp).
+/// thread count, whatever `tree` held before, apart from its wide layout: one in use is
+/// kept and collapsed again within the build (wide_tree.hpp), with the counters that key it.
 BuildStats build_tree(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
                       const BuildConfig& config, Tree& tree);
 
@@ -202,8 +202,8 @@ struct BuildScratch;
 }
 
 /// build_tree for a caller that builds again and again (the `aabb` method's rebuilds): it
-/// keeps the builds' working memory (per-triangle centroids, Morton keys, the raw tree) for
-/// the next build instead of freeing it. Memory touched for the first time was most of a
+/// keeps the builds' working memory (per-triangle centroids, Morton keys and their sort
+/// buffer, the raw nodes) for the next build instead of freeing it. Memory touched for the first time was most of a
 /// build's time on the CI VM (a 22,598-triangle build: 11.3 ms with 668 first-touch page
 /// faults, 1.8 ms warm; docs/experiments/2026-11-26-wide-traversal.md). Thread-safe: builds
 /// running at once each take their own working memory.

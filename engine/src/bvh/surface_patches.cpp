@@ -188,7 +188,7 @@ Chain fit_subtree_patches(const Tree& tree, NodeRange nodes, SurfacePatches& p, 
 void build_surface_patches(Tree& tree) {
     SurfacePatches& p = tree.patches;
     const std::size_t n = tree.nodes.size();
-    p.loop_vertices.clear();  // assign and clear keep the storage of the tree's last build
+    p.loop_vertices.clear();  // assign and clear keep whatever storage the patches have
     p.loop_begin.assign(n, 0);
     p.loop_size.assign(n, 0);
     p.triangles.assign(n, 0);

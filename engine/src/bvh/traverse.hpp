@@ -74,15 +74,11 @@ struct TraversalConfig {
 void step_pair(const WorkItem& item, std::span<const MeshView> meshes, std::vector<WorkItem>& stack,
                std::vector<TrianglePair>& candidates, TraversalStats& stats);
 
-/// The triangle pairs of two leaves whose closed boxes overlap, into `candidates` (two
-/// subtrees of one object drop the adjacent pairs adjacent_apart proves apart; alive marks
-/// are honoured). Counts box tests, not candidates. traverse_pair.cpp.
-void leaf_pair(const WorkItem& item, const MeshView& a, const Node& leaf_a, const MeshView& b, const Node& leaf_b,
-               std::vector<TrianglePair>& candidates, TraversalStats& stats);
-
 /// Processes one wide item: four child boxes of one tree against a box of the other at a
-/// time (one vector comparison), overlapping pairs onto `stack`, leaf pairs through
-/// leaf_pair. Both trees' wide layouts must be fitted. traverse_wide.cpp.
+/// time (one vector comparison), overlapping pairs onto `stack`; two leaves' triangle pairs
+/// on their double boxes into `candidates` (objects differ: no adjacency, no alive marks).
+/// Counts a wide item as a node visited and a vector test as four box tests. Both trees'
+/// wide layouts must be fitted. traverse_wide.cpp.
 void step_wide(const WorkItem& item, std::span<const MeshView> meshes, std::vector<WorkItem>& stack,
                std::vector<TrianglePair>& candidates, TraversalStats& stats);
 

@@ -8,6 +8,7 @@
 #include "geometry/adjacent_filter.hpp"
 
 namespace collidescope::bvh {
+namespace {
 
 void leaf_pair(const WorkItem& item, const MeshView& a, const Node& leaf_a, const MeshView& b,
                const Node& leaf_b, std::vector<TrianglePair>& candidates, TraversalStats& stats) {
@@ -35,6 +36,8 @@ void leaf_pair(const WorkItem& item, const MeshView& a, const Node& leaf_a, cons
     }
     stats.box_tests += std::uint64_t{leaf_a.count} * leaf_b.count;
 }
+
+}  // namespace
 
 void step_pair(const WorkItem& item, std::span<const MeshView> meshes, std::vector<WorkItem>& stack,
                std::vector<TrianglePair>& candidates, TraversalStats& stats) {

@@ -48,12 +48,18 @@ FloatBox child_box(const WideNode& node, int s) {
     return {{node.lo[0][s], node.lo[1][s], node.lo[2][s]}, {node.hi[0][s], node.hi[1][s], node.hi[2][s]}};
 }
 
-/// Bit s set when child s of `node` overlaps `box` (closed boxes; empty slots never do).
+/// Bit s set when child s of `node` overlaps `box` (closed boxes). Unused slots are masked
+/// off: their empty boxes (+inf, -inf) would pass against a box that rounds to infinities on
+/// every axis (coordinates past float range), and a pushed empty entry is no node.
 unsigned overlap_bits(const WideNode& node, const FloatBox& box) {
     Mask m = (load(node.lo[0]) <= splat(box.hi[0])) & (splat(box.lo[0]) <= load(node.hi[0]));
     m &= (load(node.lo[1]) <= splat(box.hi[1])) & (splat(box.lo[1]) <= load(node.hi[1]));
     m &= (load(node.lo[2]) <= splat(box.hi[2])) & (splat(box.lo[2]) <= load(node.hi[2]));
-    return static_cast<unsigned>((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8));
+    const unsigned used = static_cast<unsigned>(node.child[0] != k_wide_empty) |
+                          static_cast<unsigned>(node.child[1] != k_wide_empty) << 1 |
+                          static_cast<unsigned>(node.child[2] != k_wide_empty) << 2 |
+                          static_cast<unsigned>(node.child[3] != k_wide_empty) << 3;
+    return static_cast<unsigned>((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8)) & used;
 }
 
 
