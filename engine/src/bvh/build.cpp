@@ -164,11 +164,7 @@ BuildStats build_into(std::span<const TriIndices> triangles, std::span<const Vec
     });
     tree.leaf_boxes.resize(n);
     plan_refit(tree, std::max(config.refit_grain, 1u), tree.refit_plan);
-    if (config.surface_patches) {
-        build_surface_patches(tree);
-    } else {
-        tree.patches = SurfacePatches{};
-    }
+    if (config.surface_patches) build_surface_patches(tree);
     // A tree whose wide layout was in use gets it again at once, fitted by the refit below on
     // the way (a separate fit after every rebuild cost a third of a rebuild).
     const bool wide_in_use = tree.wide.usable && tree.wide.built_for == tree.builds &&

@@ -4,7 +4,6 @@
 
 #include "bvh/bvh.hpp"
 
-#include <cstring>
 #include <limits>
 
 namespace collidescope::bvh {
@@ -64,20 +63,12 @@ bool collapse(const Tree& tree, WideTree& wide) {
     return true;
 }
 
-using Floats = float __attribute__((vector_size(16)));
-
-Floats load(const float* lanes) {
-    Floats v;
-    std::memcpy(&v, lanes, sizeof v);
-    return v;
-}
-
-// Lane minimum and maximum (`a < b ? a : b`: minss, no branch; no NaN reaches a fit).
-float lane_min(Floats v) {
+// Lane minimum and maximum of a wide child's four boxes (`a < b ? a : b`: no NaN reaches a fit).
+float lane_min(const std::array<float, 4>& v) {
     const float a = v[0] < v[1] ? v[0] : v[1], b = v[2] < v[3] ? v[2] : v[3];
     return a < b ? a : b;
 }
-float lane_max(Floats v) {
+float lane_max(const std::array<float, 4>& v) {
     const float a = v[0] > v[1] ? v[0] : v[1], b = v[2] > v[3] ? v[2] : v[3];
     return a > b ? a : b;
 }
@@ -101,8 +92,8 @@ void fit_node(const Tree& tree, WideTree& wide, std::size_t w) {
         } else {
             const WideNode& below = wide.nodes[child];
             for (int k = 0; k < 3; ++k) {
-                node.lo[k][s] = lane_min(load(below.lo[k].data()));
-                node.hi[k][s] = lane_max(load(below.hi[k].data()));
+                node.lo[k][s] = lane_min(below.lo[k]);
+                node.hi[k][s] = lane_max(below.hi[k]);
             }
         }
     }
