@@ -160,10 +160,12 @@ int sigint_to_mpirun_when(const std::string& command, const std::function<bool()
 TEST(MpiInterrupt, SigintToMpirunStopsEveryRankAfterItsFrameAndKeepsTheParts) {
     COLLIDESCOPE_REQUIRE_MPI();
     TempDir dir;
-    // C's 200 frames, 100 a rank, about 60 ms a frame here; a small writer queue keeps the
-    // writer close behind, so a rank closes its part within mpirun's grace period.
+    // C's 200 frames at its large preset, 100 a rank, some 75 ms a frame here (at the default
+    // preset, about 10 ms a frame since the traversal between objects went wide, rank 1 once
+    // finished its block before mpirun passed the SIGINT on, on CI). A small writer queue keeps
+    // the writer close behind, so a rank closes its part within mpirun's grace period.
     const std::string command = testing_mpi::mpirun_command(
-        2, {"record", "--scene", "C", "--method", "aabb", "--threads", "1", "--queue-memory", "2M", "-q", "-o", "run.h5"},
+        2, {"record", "--scene", "C:large", "--method", "aabb", "--threads", "1", "--queue-memory", "2M", "-q", "-o", "run.h5"},
         dir.path(), 0);
     const int status = sigint_to_mpirun_when(command, [&] {
         return frames_complete_now(dir / "run.h5.parts" / "rank0.h5") >= 3 && frames_complete_now(dir / "run.h5.parts" / "rank1.h5") >= 3;
