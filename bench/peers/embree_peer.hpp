@@ -92,16 +92,16 @@ public:
     /// The candidate pairs (box overlaps) of every object pair, (a, a) meaning self-collision,
     /// in canonical order within a pair, in no order between pairs. update() first.
     PairSet candidates(std::span<const ObjectPair> object_pairs) {
-        tbb::enumerable_thread_specific<PairSet> local;
+        for (PairSet& part : m_local) part.clear();
         for (const ObjectPair& pair : object_pairs) {
             EmbreeCollect collect;
             collect.a = pair.a;
             collect.b = pair.b;
-            collect.pairs = &local;
+            collect.pairs = &m_local;
             rtcCollide(m_objects[pair.a].scene, m_objects[pair.b].scene, &embree_collide, &collect);
         }
         PairSet pairs;
-        for (const PairSet& part : local) pairs.insert(pairs.end(), part.begin(), part.end());
+        for (const PairSet& part : m_local) pairs.insert(pairs.end(), part.begin(), part.end());
         return pairs;
     }
 
@@ -133,6 +133,11 @@ private:
     RTCBuildQuality m_quality;
     std::vector<EmbreeObject> m_objects;
     std::vector<std::uint64_t> m_revisions;
+    /// The threads' candidate lists, kept between frames as the engine keeps its own
+    /// (TraversalBuffers): made afresh each frame, their growth touched new memory every
+    /// frame, and the peer's collide time on data set C moved between 2.3 and 7 ms with what
+    /// else the process had allocated before (docs/experiments/2026-11-26-large-blocks.md).
+    tbb::enumerable_thread_specific<PairSet> m_local;
 };
 
 }  // namespace collidescope::peers
