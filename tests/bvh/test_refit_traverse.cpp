@@ -65,7 +65,7 @@ TEST(BvhRefit, SameBoxesForEveryThreadCount) {
     std::mt19937_64 rng(8);
     const MeshData mesh = testing::grid_soup(rng, 20000, 60);
     const std::vector<Vec3> moved = jiggle(rng, mesh.vertices, 0.5, 3);
-    std::vector<std::vector<Node>> results;
+    std::vector<LargeVector<Node>> results;
     for (const int threads : {1, 2, 4}) {
         const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
         BuildConfig config;

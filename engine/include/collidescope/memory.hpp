@@ -11,8 +11,10 @@ namespace collidescope {
 /// Asks the C library's allocator to keep freed memory for reuse: blocks below 32 MiB come
 /// from the heap, and the heap is never trimmed, so the process keeps its peak footprint
 /// (a process-wide setting: the `collidescope` command and the benchmarks call it first
-/// thing; a program embedding the engine may, or not). Does nothing on a C library other
-/// than glibc. Returns true when the settings were taken.
+/// thing; a program embedding the engine may, or not). The engine's own large arrays (trees,
+/// build memory, candidate buffers: docs/architecture.md) are kept too, without the 256 MiB
+/// limit they have otherwise. The C library part does nothing on a C library other than
+/// glibc. Returns true when glibc's settings were taken.
 bool keep_freed_memory();
 
 }  // namespace collidescope

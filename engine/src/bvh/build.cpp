@@ -45,7 +45,7 @@ namespace {
 // Copies the raw tree into `nodes`, in preorder (left child next, right child in `index`),
 // iteratively, and measures its depth on the way (a separate recursive walk cost 4% of an
 // LBVH build).
-void to_preorder(const detail::RawTree& raw, std::vector<Node>& nodes, std::uint32_t& depth) {
+void to_preorder(const detail::RawTree& raw, LargeVector<Node>& nodes, std::uint32_t& depth) {
     nodes.clear();
     nodes.reserve(raw.used.load());
     struct Item {

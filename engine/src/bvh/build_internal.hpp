@@ -13,8 +13,8 @@ namespace collidescope::bvh::detail {
 
 /// Per-triangle boxes and centroids, computed once per build in parallel.
 struct BuildInput {
-    std::vector<Aabb> boxes;  ///< empty unless asked for (make_build_input)
-    std::vector<std::array<double, 3>> centroids;  ///< box centres (only steer the splits)
+    LargeVector<Aabb> boxes;  ///< empty unless asked for (make_build_input)
+    LargeVector<std::array<double, 3>> centroids;  ///< box centres (only steer the splits)
     Aabb centroid_bounds;
 };
 
@@ -28,9 +28,9 @@ struct RawNode {
 /// depend on thread timing; the structure does not), the root at 0, and the triangle ids
 /// permuted so that every leaf is a contiguous range.
 struct RawTree {
-    std::vector<RawNode> nodes;
+    LargeVector<RawNode> nodes;
     std::atomic<std::uint32_t> used{1};
-    std::vector<std::uint32_t> ids;
+    LargeVector<std::uint32_t> ids;
 
     /// Allocates two sibling nodes; returns the first's index.
     std::uint32_t allocate_pair() { return used.fetch_add(2, std::memory_order_relaxed); }
@@ -38,8 +38,8 @@ struct RawTree {
 
 /// The LBVH builder's keys and its radix sort's second buffer.
 struct LbvhScratch {
-    std::vector<MortonKey> keys;
-    std::vector<MortonKey> sorted;
+    LargeVector<MortonKey> keys;
+    LargeVector<MortonKey> sorted;
 };
 
 /// Everything a build writes besides the tree (bvh.hpp's TreeBuilder keeps it between builds).

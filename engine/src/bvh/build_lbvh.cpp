@@ -38,7 +38,7 @@ void sort_codes(const BuildInput& input, LbvhScratch& scratch) {
         const double extent = bounds.hi[k] - bounds.lo[k];
         scale[k] = extent > 0 ? static_cast<double>(k_cells) / extent : 0;
     }
-    std::vector<MortonKey>& keys = scratch.keys;
+    LargeVector<MortonKey>& keys = scratch.keys;
     keys.resize(input.centroids.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, keys.size(), 4096),
                       [&](const tbb::blocked_range<std::size_t>& range) {
@@ -55,7 +55,7 @@ void sort_codes(const BuildInput& input, LbvhScratch& scratch) {
 
 class LbvhBuilder {
 public:
-    LbvhBuilder(const std::vector<MortonKey>& keys, const BuildConfig& config, RawTree& raw)
+    LbvhBuilder(const LargeVector<MortonKey>& keys, const BuildConfig& config, RawTree& raw)
         : m_keys(keys), m_config(config), m_raw(raw) {}
 
     void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end) {
@@ -89,7 +89,7 @@ private:
         return static_cast<std::uint32_t>(it - m_keys.begin());
     }
 
-    const std::vector<MortonKey>& m_keys;
+    const LargeVector<MortonKey>& m_keys;
     const BuildConfig& m_config;
     RawTree& m_raw;
 };
@@ -98,7 +98,7 @@ private:
 
 void build_lbvh(const BuildInput& input, const BuildConfig& config, RawTree& raw, LbvhScratch& scratch) {
     sort_codes(input, scratch);
-    const std::vector<MortonKey>& keys = scratch.keys;
+    const LargeVector<MortonKey>& keys = scratch.keys;
     for (std::size_t i = 0; i < keys.size(); ++i) raw.ids[i] = keys[i].id;
     LbvhBuilder builder(keys, config, raw);
     builder.build(0, 0, static_cast<std::uint32_t>(keys.size()));

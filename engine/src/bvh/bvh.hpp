@@ -121,38 +121,38 @@ struct RefitSubtree {
 struct RefitPlan {
     std::vector<RefitSubtree> subtrees;
     std::vector<std::uint32_t> top;
-    std::vector<std::uint32_t> leaves;    ///< every leaf's node index, in slot (= preorder) order
-    std::vector<std::uint8_t> leaf_ends;  ///< per triangle slot: 1 at the last slot of its leaf
-    std::vector<std::uint32_t> inner;     ///< the subtrees' inner nodes, subtree by subtree, in preorder
+    LargeVector<std::uint32_t> leaves;    ///< every leaf's node index, in slot (= preorder) order
+    LargeVector<std::uint8_t> leaf_ends;  ///< per triangle slot: 1 at the last slot of its leaf
+    LargeVector<std::uint32_t> inner;     ///< the subtrees' inner nodes, subtree by subtree, in preorder
 };
 
 /// What self-collision culling knows of each node's triangles (bvh/surface_patches.hpp):
 /// the boundary loop, from the topology at the build, and the projected orientations, from
 /// every refit. Empty unless the tree was built with BuildConfig::surface_patches.
 struct SurfacePatches {
-    std::vector<std::uint32_t> loop_begin;     ///< per node: first corner in loop_vertices
-    std::vector<std::uint32_t> loop_size;      ///< per node: corners; 0: not one boundary loop
-    std::vector<std::uint32_t> loop_vertices;  ///< the loops' vertex indices, in order
-    std::vector<std::uint32_t> triangles;      ///< per node: triangles below it
+    LargeVector<std::uint32_t> loop_begin;     ///< per node: first corner in loop_vertices
+    LargeVector<std::uint32_t> loop_size;      ///< per node: corners; 0: not one boundary loop
+    LargeVector<std::uint32_t> loop_vertices;  ///< the loops' vertex indices, in order
+    LargeVector<std::uint32_t> triangles;      ///< per node: triangles below it
     /// Per node, refreshed by refit: bit 2k set when every triangle below projects with
     /// positive orientation onto the plane that drops axis k, bit 2k + 1 when every one
     /// projects with negative orientation.
-    std::vector<std::uint8_t> sides;
+    LargeVector<std::uint8_t> sides;
 
     bool empty() const { return loop_size.empty(); }
 };
 
 /// The hierarchy of one object. Empty (no nodes) for an object without triangles.
 struct Tree {
-    std::vector<Node> nodes;                 ///< preorder; nodes[0] is the root
-    std::vector<std::uint32_t> triangle_ids;  ///< triangle indices in leaf order
+    LargeVector<Node> nodes;                 ///< preorder; nodes[0] is the root
+    LargeVector<std::uint32_t> triangle_ids;  ///< triangle indices in leaf order
     /// The triangles' vertex indices in leaf order (leaf_triangles[k] ==
     /// triangles[triangle_ids[k]]): a copy, so refit and traversal stream them instead of
     /// gathering through triangle_ids (it halved refit's cache misses).
-    std::vector<TriIndices> leaf_triangles;
+    LargeVector<TriIndices> leaf_triangles;
     /// Each triangle's box in leaf order, set with the node boxes by every refit: the leaf
     /// tests read them in a row instead of gathering three vertices per triangle per test.
-    std::vector<Aabb> leaf_boxes;
+    LargeVector<Aabb> leaf_boxes;
     RefitPlan refit_plan;
     SurfacePatches patches;  ///< self-collision culling's per-node data (may be empty)
     double built_cost = 0;  ///< sah_cost right after the last build (quality reference)

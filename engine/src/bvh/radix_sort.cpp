@@ -65,7 +65,7 @@ void scatter_pass(std::span<const MortonKey> from, std::span<MortonKey> to, int 
 
 }  // namespace
 
-void radix_sort(std::vector<MortonKey>& keys, std::vector<MortonKey>& scratch) {
+void radix_sort(LargeVector<MortonKey>& keys, LargeVector<MortonKey>& scratch) {
     const std::size_t n = keys.size();
     if (n < 2) return;
     std::vector<Counts> counts(k_passes);
@@ -76,8 +76,8 @@ void radix_sort(std::vector<MortonKey>& keys, std::vector<MortonKey>& scratch) {
     const auto threads = static_cast<std::size_t>(std::max(tbb::this_task_arena::max_concurrency(), 1));
     const std::size_t blocks = n < 2 * k_block || threads == 1 ? 1 : std::min(n / k_block, 4 * threads);
     scratch.resize(n);
-    std::vector<MortonKey>* from = &keys;
-    std::vector<MortonKey>* to = &scratch;
+    LargeVector<MortonKey>* from = &keys;
+    LargeVector<MortonKey>* to = &scratch;
     for (int pass = 0; pass < k_passes; ++pass) {
         if (counts[pass][digit(keys[0].code, pass)] == n) continue;  // one digit value: order unchanged
         if (blocks == 1) {

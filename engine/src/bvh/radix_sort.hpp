@@ -3,10 +3,14 @@
 // private). The keys arrive in triangle order, so stability gives the triangle index as the
 // tie-break between equal codes, as `(code, id)` order does.
 
+#include "common/large_blocks.hpp"
+
 #include <cstdint>
 #include <vector>
 
 namespace collidescope::bvh::detail {
+
+using collidescope::detail::LargeVector;
 
 /// A triangle's Morton code and its index.
 struct MortonKey {
@@ -22,6 +26,6 @@ struct MortonKey {
 /// Sorts `keys` by code, stably: keys with equal codes keep their relative order. 11-bit digits
 /// (six passes over 64 bits); a pass whose digit is the same for every key is skipped, so
 /// codes that vary in few bits cost few passes. `scratch` is resized and overwritten.
-void radix_sort(std::vector<MortonKey>& keys, std::vector<MortonKey>& scratch);
+void radix_sort(LargeVector<MortonKey>& keys, LargeVector<MortonKey>& scratch);
 
 }  // namespace collidescope::bvh::detail

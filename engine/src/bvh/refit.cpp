@@ -95,7 +95,7 @@ template <bool kSides>
 double fit_inner(Tree& tree, std::uint32_t index, WideTree* wide) {
     Node& node = tree.nodes[index];
     if constexpr (kSides) {
-        std::vector<std::uint8_t>& sides = tree.patches.sides;
+        auto& sides = tree.patches.sides;
         sides[index] = sides[index + 1] & sides[node.index];
     }
     Bounds bounds = Bounds::empty();

@@ -12,6 +12,11 @@
 
 namespace collidescope::bvh {
 
+/// A thread's candidate pairs during a traversal: a buffer of some megabytes, grown once and
+/// kept (TraversalBuffers), in large blocks (common/large_blocks.hpp) so that it is shared
+/// among threads and pipelines instead of each thread's malloc arena touching memory anew.
+using CandidateBuffer = LargeVector<TrianglePair>;
+
 /// One object's tree and mesh, as the traversal reads them (spans over the caller's memory).
 struct MeshView {
     const Tree* tree = nullptr;
@@ -72,7 +77,7 @@ struct TraversalConfig {
 /// Processes one node-pair item: the box test, then leaf triangle pairs into `candidates` or
 /// follow-up items onto `stack` (the larger node is split). traverse_pair.cpp.
 void step_pair(const WorkItem& item, std::span<const MeshView> meshes, std::vector<WorkItem>& stack,
-               std::vector<TrianglePair>& candidates, TraversalStats& stats);
+               CandidateBuffer& candidates, TraversalStats& stats);
 
 /// Processes one wide item: four child boxes of one tree against a box of the other at a
 /// time (one vector comparison), overlapping pairs onto `stack`; two leaves' triangle pairs
@@ -80,7 +85,7 @@ void step_pair(const WorkItem& item, std::span<const MeshView> meshes, std::vect
 /// Counts a wide item as a node visited and a vector test as four box tests. Both trees'
 /// wide layouts must be fitted. traverse_wide.cpp.
 void step_wide(const WorkItem& item, std::span<const MeshView> meshes, std::vector<WorkItem>& stack,
-               std::vector<TrianglePair>& candidates, TraversalStats& stats);
+               CandidateBuffer& candidates, TraversalStats& stats);
 
 /// Appends the root item of objects a and b (non-empty trees) to `roots`: the wide one when
 /// a != b, both trees' wide layouts are fitted and no alive marks are set (none at all when
@@ -90,7 +95,7 @@ void add_pair_root(std::uint32_t a, std::uint32_t b, std::span<const MeshView> m
 /// Processes one self item (obj_a == obj_b, node_a == node_b): a leaf's own pairs i < j, or
 /// the children's self items and their pair item. traverse_self.cpp.
 void step_self(const WorkItem& item, std::span<const MeshView> meshes, std::vector<WorkItem>& stack,
-               std::vector<TrianglePair>& candidates, TraversalStats& stats);
+               CandidateBuffer& candidates, TraversalStats& stats);
 
 /// The per-thread stacks and candidate buffers of a traversal, kept by a caller that
 /// traverses every frame so that they are reused: a fresh buffer of a million candidates a

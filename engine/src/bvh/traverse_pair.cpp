@@ -11,7 +11,7 @@ namespace collidescope::bvh {
 namespace {
 
 void leaf_pair(const WorkItem& item, const MeshView& a, const Node& leaf_a, const MeshView& b,
-               const Node& leaf_b, std::vector<TrianglePair>& candidates, TraversalStats& stats) {
+               const Node& leaf_b, CandidateBuffer& candidates, TraversalStats& stats) {
     const std::uint32_t* ids_a = a.tree->triangle_ids.data() + leaf_a.index;
     const std::uint32_t* ids_b = b.tree->triangle_ids.data() + leaf_b.index;
     const Aabb* boxes_a = a.tree->leaf_boxes.data() + leaf_a.index;
@@ -40,7 +40,7 @@ void leaf_pair(const WorkItem& item, const MeshView& a, const Node& leaf_a, cons
 }  // namespace
 
 void step_pair(const WorkItem& item, std::span<const MeshView> meshes, std::vector<WorkItem>& stack,
-               std::vector<TrianglePair>& candidates, TraversalStats& stats) {
+               CandidateBuffer& candidates, TraversalStats& stats) {
     const MeshView& a = meshes[item.obj_a];
     const MeshView& b = meshes[item.obj_b];
     const Node& x = a.tree->nodes[item.node_a];

@@ -17,7 +17,7 @@ namespace collidescope::bvh {
 namespace {
 
 void step(const WorkItem& item, std::span<const MeshView> meshes, std::vector<WorkItem>& stack,
-          std::vector<TrianglePair>& candidates, TraversalStats& stats) {
+          CandidateBuffer& candidates, TraversalStats& stats) {
     if (item.wide) {
         step_wide(item, meshes, stack, candidates, stats);
     } else if (item.obj_a == item.obj_b && item.node_a == item.node_b) {
@@ -28,7 +28,7 @@ void step(const WorkItem& item, std::span<const MeshView> meshes, std::vector<Wo
 }
 
 struct Local {
-    std::vector<TrianglePair> candidates;
+    CandidateBuffer candidates;
     std::vector<WorkItem> stack;
     TraversalStats stats;
 

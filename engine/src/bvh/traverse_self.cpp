@@ -14,7 +14,7 @@ namespace collidescope::bvh {
 namespace {
 
 void leaf_self(const WorkItem& item, const MeshView& mesh, const Node& leaf,
-               std::vector<TrianglePair>& candidates, TraversalStats& stats) {
+               CandidateBuffer& candidates, TraversalStats& stats) {
     const std::uint32_t* ids = mesh.tree->triangle_ids.data() + leaf.index;
     const Aabb* boxes = mesh.tree->leaf_boxes.data() + leaf.index;
     const TriIndices* tris = mesh.tree->leaf_triangles.data() + leaf.index;
@@ -35,7 +35,7 @@ void leaf_self(const WorkItem& item, const MeshView& mesh, const Node& leaf,
 }  // namespace
 
 void step_self(const WorkItem& item, std::span<const MeshView> meshes, std::vector<WorkItem>& stack,
-               std::vector<TrianglePair>& candidates, TraversalStats& stats) {
+               CandidateBuffer& candidates, TraversalStats& stats) {
     const MeshView& mesh = meshes[item.obj_a];
     const Node& node = mesh.tree->nodes[item.node_a];
     ++stats.nodes_visited;

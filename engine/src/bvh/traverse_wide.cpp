@@ -66,7 +66,7 @@ unsigned overlap_bits(const WideNode& node, const FloatBox& box) {
 // Two leaves of different objects: every triangle pair on the double boxes (the leaf entries
 // carry the slot ranges, so no binary node is read), the candidates exactly the pairs whose
 // closed boxes overlap.
-void wide_leaf_pair(const WorkItem& item, const Tree& a, const Tree& b, std::vector<TrianglePair>& candidates,
+void wide_leaf_pair(const WorkItem& item, const Tree& a, const Tree& b, CandidateBuffer& candidates,
                     TraversalStats& stats) {
     const std::uint32_t first_a = wide_leaf_first(item.node_a), count_a = wide_leaf_count(item.node_a);
     const std::uint32_t first_b = wide_leaf_first(item.node_b), count_b = wide_leaf_count(item.node_b);
@@ -84,7 +84,7 @@ void wide_leaf_pair(const WorkItem& item, const Tree& a, const Tree& b, std::vec
 }  // namespace
 
 void step_wide(const WorkItem& item, std::span<const MeshView> meshes, std::vector<WorkItem>& stack,
-               std::vector<TrianglePair>& candidates, TraversalStats& stats) {
+               CandidateBuffer& candidates, TraversalStats& stats) {
     const MeshView& a = meshes[item.obj_a];
     const MeshView& b = meshes[item.obj_b];
     const Tree& tree_a = *a.tree;

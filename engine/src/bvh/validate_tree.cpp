@@ -176,9 +176,9 @@ private:
             }
             if (subtree.inner_end != inner.size()) fail(name + ": inner_end " + std::to_string(subtree.inner_end));
         }
-        if (plan.leaves != leaves) fail("the refit plan's leaves are not the tree's leaves in preorder");
-        if (plan.inner != inner) fail("the refit plan's inner nodes are not the subtrees' inner nodes in preorder");
-        if (plan.leaf_ends != ends) fail("the refit plan's leaf_ends do not mark the leaves' last slots");
+        if (!std::ranges::equal(plan.leaves, leaves)) fail("the refit plan's leaves are not the tree's leaves in preorder");
+        if (!std::ranges::equal(plan.inner, inner)) fail("the refit plan's inner nodes are not the subtrees' inner nodes in preorder");
+        if (!std::ranges::equal(plan.leaf_ends, ends)) fail("the refit plan's leaf_ends do not mark the leaves' last slots");
     }
 
     const Tree& m_tree;

@@ -10,6 +10,8 @@
 // the leaves' triangles are then tested on their double boxes, as the binary traversal does.
 // The candidates are exactly the binary traversal's.
 
+#include "common/large_blocks.hpp"
+
 #include <array>
 #include <bit>
 #include <limits>
@@ -17,6 +19,9 @@
 #include <vector>
 
 namespace collidescope::bvh {
+
+/// The trees' arrays: large ones in huge pages, kept for reuse (common/large_blocks.hpp).
+using collidescope::detail::LargeVector;
 
 struct Tree;
 
@@ -49,10 +54,10 @@ struct alignas(16) WideNode {
 /// The wide layout of one Tree (Tree::wide), collapsed from its binary nodes and fitted to
 /// its boxes on demand (fit_wide), so that only trees traversed against another object pay.
 struct WideTree {
-    std::vector<WideNode> nodes;  ///< nodes[0] is the root's; empty when the root is a leaf
+    LargeVector<WideNode> nodes;  ///< nodes[0] is the root's; empty when the root is a leaf
     /// Per binary node: 4 * wide node + slot of the wide slot it fills, or ~0 (refit writes
     /// each box it computes there, keeping the layout fitted once fit_wide has fitted it).
-    std::vector<std::uint32_t> slot_of;
+    LargeVector<std::uint32_t> slot_of;
     bool usable = false;  ///< false: the tree's leaves or size do not fit the leaf entries
     std::uint64_t built_for = ~std::uint64_t{0};   ///< the Tree::builds it was collapsed from
     std::uint64_t fitted_for = ~std::uint64_t{0};  ///< the Tree::fits its boxes come from

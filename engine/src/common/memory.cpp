@@ -2,6 +2,8 @@
 
 #include "collidescope/memory.hpp"
 
+#include "common/large_blocks.hpp"
+
 #include <cstdlib>  // defines __GLIBC__ on glibc
 #include <limits>
 
@@ -12,6 +14,8 @@
 namespace collidescope {
 
 bool keep_freed_memory() {
+    // The engine's own large arrays (common/large_blocks.hpp): every freed block is kept.
+    detail::set_large_block_cache_limit(std::numeric_limits<std::size_t>::max());
 #if defined(__GLIBC__)
     // The largest fixed mmap threshold glibc accepts on 64-bit (DEFAULT_MMAP_THRESHOLD_MAX).
     constexpr int k_mmap_threshold = 32 * 1024 * 1024;
