@@ -21,6 +21,12 @@ void add_aabb_options(CLI::App& command, AabbOptions& options) {
         ->check(CLI::PositiveNumber)
         ->capture_default_str()
         ->group(group);
+    command.add_option("--rebuild-payback-frames", options.payback_frames,
+                       "Quality rule: rebuild only when the detection time it can save pays for the build "
+                       "within this many frames (0: the SAH cost alone decides)")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str()
+        ->group(group);
     command.add_option("--rebuild-fraction", options.thesis_fraction,
                        "Thesis rule: rebuild when detection time exceeds this fraction of a rebuild's time")
         ->check(CLI::PositiveNumber)

@@ -41,6 +41,7 @@ std::unique_ptr<Method> make_variant(std::int64_t variant) {
     if (variant == 3) config.policy.rule = bvh::RebuildRule::Thesis;
     if (variant >= 4) {
         config.policy.quality_limit = -1;  // any quality exceeds it: rebuild every frame
+        config.policy.payback_frames = 0;
         config.background = bvh::BackgroundMode::Off;
     }
     return make_aabb_method(config);

@@ -55,6 +55,7 @@ MethodRun run_aabb(const std::vector<Frame>& frames, bool self_collision, const 
     config.background = variant.background;
     config.policy.rule = variant.rule;
     config.policy.quality_limit = 1.05;  // rebuild often, so swaps and rebuilds are exercised
+    config.policy.payback_frames = 0;
     config.on_tree = checker.hook();
     const std::unique_ptr<Method> method = make_aabb_method(config);
     return testing::run_method(*method, frames, self_collision);

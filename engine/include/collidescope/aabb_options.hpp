@@ -45,6 +45,9 @@ struct AabbOptions {
     AabbBuilder builder = AabbBuilder::Lbvh;
     AabbRebuildRule rebuild = AabbRebuildRule::Quality;
     double quality_limit = 1.5;     ///< quality rule threshold (relative SAH cost)
+    /// Quality rule: a rebuild must pay for itself within this many frames (an upper bound on
+    /// the detection time it saves, against its build time); 0: the SAH cost alone decides.
+    double payback_frames = 16;
     double thesis_fraction = 0.75;  ///< thesis rule: "three fourths of a rebuild"
     AabbBackground background = AabbBackground::Auto;
 };

@@ -156,6 +156,7 @@ AabbConfig aabb_config(const AabbOptions& options, int threads) {
     config.build.builder = options.builder;
     config.policy.rule = options.rebuild;
     config.policy.quality_limit = options.quality_limit;
+    config.policy.payback_frames = options.payback_frames;
     config.policy.thesis_fraction = options.thesis_fraction;
     config.background = rebuild_in_background(options.background, threads) ? BackgroundMode::Async : BackgroundMode::Off;
     return config;

@@ -37,8 +37,16 @@ struct RebuildPolicyConfig {
     /// three fourths of a rebuild".
     double thesis_fraction = 0.75;
     /// Quality rule: rebuild when the refit tree's SAH cost exceeds this multiple of its cost
-    /// right after its build.
+    /// right after its build...
     double quality_limit = 1.5;
+    /// ...and the rebuild pays for itself within this many frames: what a frame's detection
+    /// could save, at most detection_ms * (1 - 1 / quality) (a tree of SAH cost `quality`
+    /// times its built cost, traversed, against one of cost 1; the narrow phase does not
+    /// shrink), times payback_frames, reaches rebuild_ms. Past in_frame_quality the tree is
+    /// rebuilt whatever the times. 0: the SAH cost alone decides. Without it a 437k-triangle
+    /// cloth (cloth-drape:large, 2 threads) spent 110-160 ms rebuilding in one frame to save
+    /// under a millisecond a frame (docs/experiments/2026-11-26-large-blocks.md).
+    double payback_frames = 16;
     /// A chosen rebuild runs in the frame, even where rebuilds go to the background worker,
     /// when the refit tree's SAH cost is past this multiple of its post-build cost: the frame
     /// would traverse a tree that costs far more than its build (data set D's jump from frame
@@ -67,6 +75,9 @@ public:
     const RebuildPolicyConfig& config() const { return m_config; }
 
 private:
+    /// The quality rule: degraded past quality_limit, and the rebuild pays (payback_frames).
+    bool quality_rebuild_pays(const RebuildInputs& inputs) const;
+
     RebuildPolicyConfig m_config;
 };
 
