@@ -47,16 +47,19 @@ TEST(RebuildPolicy, QualityRuleAtTheLimit) {
 }
 
 // Past the limit, a rebuild is chosen when what it can save within payback_frames frames,
-// detection_ms * (1 - 1 / quality) a frame, reaches its cost; past in_frame_quality always.
+// traversal_ms * (1 - 1 / quality) a frame, reaches its cost; past in_frame_quality always.
+// Inputs: {has_tree, topology_changed, quality, detection_ms, rebuild_ms, traversal_ms}.
 TEST(RebuildPolicy, QualityRuleRebuildsWhenTheRebuildPaysWithinThePaybackFrames) {
     const RebuildPolicy policy({RebuildRule::Quality, 0.75, 1.5, 10, 4});
-    // quality 2: half the detection time saved a frame; 10 frames of 2 ms save 10 ms.
-    EXPECT_EQ(policy.decide({true, false, 2.0, 2.0, 10.0}), RebuildReason::Quality);
-    EXPECT_EQ(policy.decide({true, false, 2.0, 2.0, 10.01}), RebuildReason::None);
-    EXPECT_EQ(policy.decide({true, false, 2.0, 0.5, 150.0}), RebuildReason::None);  // a big build, little to save
-    EXPECT_EQ(policy.decide({true, false, 1.4, 1e6, 1.0}), RebuildReason::None);    // under the limit: never
+    // quality 2: half the traversal time saved a frame; 10 frames of 2 ms save 10 ms.
+    EXPECT_EQ(policy.decide({true, false, 2.0, 2.0, 10.0, 2.0}), RebuildReason::Quality);
+    EXPECT_EQ(policy.decide({true, false, 2.0, 2.0, 10.01, 2.0}), RebuildReason::None);
+    // The narrow phase does not count: the same candidates are tested whatever the tree.
+    EXPECT_EQ(policy.decide({true, false, 2.0, 100.0, 10.0, 1.0}), RebuildReason::None);
+    EXPECT_EQ(policy.decide({true, false, 2.0, 0.5, 150.0, 0.5}), RebuildReason::None);  // a big build, little to save
+    EXPECT_EQ(policy.decide({true, false, 1.4, 1e6, 1.0, 1e6}), RebuildReason::None);    // under the limit: never
     // Past in_frame_quality the tree is rebuilt whatever the times.
-    EXPECT_EQ(policy.decide({true, false, 4.5, 0.0, 150.0}), RebuildReason::Quality);
+    EXPECT_EQ(policy.decide({true, false, 4.5, 0.0, 150.0, 0.0}), RebuildReason::Quality);
     // Initial and topology rebuilds do not weigh costs.
     EXPECT_EQ(policy.decide({false, false, 1.0, 0.0, 150.0}), RebuildReason::Initial);
     EXPECT_EQ(policy.decide({true, true, 1.0, 0.0, 150.0}), RebuildReason::Topology);

@@ -86,7 +86,7 @@ TraversalStats AabbCuller::cull(const FrameContext& context, std::vector<Triangl
     const double refitted = now();
     // The quality the policy judges: after refit, before any rebuild resets it.
     for (const std::uint32_t object : m_used) info.tree_quality = std::max(info.tree_quality, m_trees->at(object).quality);
-    m_trees->apply_policy(frame, m_used, m_last_detection_ms, info);
+    m_trees->apply_policy(frame, m_used, m_last_detection_ms, m_last_traversal_ms, info);
     const double rebuilt = now();
     m_trees->fit_wide(paired_objects(context));
     const double widened = now();

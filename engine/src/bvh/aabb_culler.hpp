@@ -75,8 +75,12 @@ public:
     /// object has no survivor). Appends the candidate pairs among the survivors.
     TraversalStats traverse_culled(const FrameContext& context, const std::vector<std::vector<std::uint8_t>>& alive,
                                    std::vector<TrianglePair>& candidates);
-    /// The last frame's detection time (traversal + narrow phase) for the thesis rebuild rule.
-    void set_detection_ms(double ms) { m_last_detection_ms = ms; }
+    /// The last frame's detection time (traversal + narrow phase: the thesis rebuild rule) and
+    /// its traversal time alone (the quality rule's payback: what a better tree can shrink).
+    void set_detection_ms(double detection_ms, double traversal_ms) {
+        m_last_detection_ms = detection_ms;
+        m_last_traversal_ms = traversal_ms;
+    }
     /// Starts rebuilding, on the worker, every tree the last culled frame used, from `frame`'s
     /// positions (thesis Algorithm 4 step 5, "Rebuild In Thread"); the next cull() after it
     /// finished swaps them in and refits them to its frame. Records the start in `info`.
@@ -100,6 +104,7 @@ private:
     std::shared_ptr<TraversalBuffers> m_buffers = make_traversal_buffers();
     std::vector<std::uint32_t> m_used;
     double m_last_detection_ms = 0;
+    double m_last_traversal_ms = 0;
 };
 
 /// Whether rebuilds run on the worker thread under `mode` when frames use `threads` worker

@@ -126,7 +126,7 @@ void ObjectTrees::refit_rest(const Frame& frame, std::span<const std::uint32_t> 
     for (const std::uint32_t object : stale) notify(TreeEventKind::Refit, object, frame.objects[object]);
 }
 
-void ObjectTrees::apply_policy(const Frame& frame, std::span<const std::uint32_t> used, double detection_ms,
+void ObjectTrees::apply_policy(const Frame& frame, std::span<const std::uint32_t> used, double detection_ms, double traversal_ms,
                                AabbFrameInfo& info) {
     double rebuild_ms = 0;  // the thesis's "rebuild": every hierarchy in use
     for (const std::uint32_t object : used) rebuild_ms += m_trees[object].build_ms;
@@ -136,7 +136,7 @@ void ObjectTrees::apply_policy(const Frame& frame, std::span<const std::uint32_t
     for (const std::uint32_t object : used) {
         const ObjectTree& slot = m_trees[object];
         if (slot.pending || slot.fresh || slot.tree.empty()) continue;
-        const RebuildReason decided = m_policy.decide({true, false, slot.quality, detection_ms, rebuild_ms});
+        const RebuildReason decided = m_policy.decide({true, false, slot.quality, detection_ms, rebuild_ms, traversal_ms});
         if (decided == RebuildReason::None) continue;
         reason = decided;
         const bool too_degraded = slot.quality > m_policy.config().in_frame_quality;

@@ -45,9 +45,10 @@ public:
     void build_missing(const Frame& frame, std::span<const std::uint32_t> used, AabbFrameInfo& info);
     /// Refits the other `used` trees to the frame; returns the stage's milliseconds.
     void refit_rest(const Frame& frame, std::span<const std::uint32_t> used);
-    /// Asks the policy about every refit tree; rebuilds now or hands them to the worker.
+    /// Asks the policy about every refit tree (the last frame's detection and traversal
+    /// times: RebuildInputs); rebuilds now or hands them to the worker.
     void apply_policy(const Frame& frame, std::span<const std::uint32_t> used, double detection_ms,
-                      AabbFrameInfo& info);
+                      double traversal_ms, AabbFrameInfo& info);
     /// Counts the frames in a row each object has been in a pair with another (`paired`:
     /// this frame's), and fits the wide layouts (wide_tree.hpp) of those in such a pair for
     /// a second frame in a row, or whose layout refit kept fitted, in parallel. A contact of

@@ -18,7 +18,7 @@ std::string_view rebuild_reason_name(RebuildReason reason) {
 bool RebuildPolicy::quality_rebuild_pays(const RebuildInputs& inputs) const {
     if (!(inputs.quality > m_config.quality_limit)) return false;
     if (m_config.payback_frames <= 0 || inputs.quality > m_config.in_frame_quality) return true;
-    const double saved_per_frame = inputs.detection_ms * (1 - 1 / inputs.quality);
+    const double saved_per_frame = inputs.traversal_ms * (1 - 1 / inputs.quality);
     return saved_per_frame * m_config.payback_frames >= inputs.rebuild_ms;
 }
 

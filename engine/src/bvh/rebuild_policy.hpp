@@ -39,10 +39,10 @@ struct RebuildPolicyConfig {
     /// Quality rule: rebuild when the refit tree's SAH cost exceeds this multiple of its cost
     /// right after its build...
     double quality_limit = 1.5;
-    /// ...and the rebuild pays for itself within this many frames: what a frame's detection
-    /// could save, at most detection_ms * (1 - 1 / quality) (a tree of SAH cost `quality`
-    /// times its built cost, traversed, against one of cost 1; the narrow phase does not
-    /// shrink), times payback_frames, reaches rebuild_ms. Past in_frame_quality the tree is
+    /// ...and the rebuild pays for itself within this many frames: what a frame's traversal
+    /// could save, traversal_ms * (1 - 1 / quality) (a tree of SAH cost `quality` times its
+    /// built cost against one of cost 1; the narrow phase tests the same candidates either
+    /// way), times payback_frames, reaches rebuild_ms. Past in_frame_quality the tree is
     /// rebuilt whatever the times. 0: the SAH cost alone decides. Without it a 437k-triangle
     /// cloth (cloth-drape:large, 2 threads) spent 110-160 ms rebuilding in one frame to save
     /// under a millisecond a frame (docs/experiments/2026-11-26-large-blocks.md).
@@ -64,6 +64,9 @@ struct RebuildInputs {
     double detection_ms = 0;
     /// What rebuilding costs (ms): the last measured build time of the hierarchies in use.
     double rebuild_ms = 0;
+    /// The last frame's traversal time alone (ms): the part of detection_ms a better tree
+    /// shrinks (the narrow phase tests the same candidates whatever the tree).
+    double traversal_ms = 0;
 };
 
 /// Decides, per tree and frame, whether to rebuild and why.

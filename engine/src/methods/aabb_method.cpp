@@ -18,7 +18,7 @@ public:
         const bvh::TraversalStats traversal = m_culler->cull(context, m_candidates, stats);
         const double before = m_culler->now();
         narrow_phase(context.frame, m_candidates, pairs, stats);
-        m_culler->set_detection_ms(traversal.ms + (m_culler->now() - before));
+        m_culler->set_detection_ms(traversal.ms + (m_culler->now() - before), traversal.ms);
     }
 
 private:

@@ -22,7 +22,7 @@ public:
         bvh::AabbCuller& aabb = m_culler.aabb();
         const double before = aabb.now();
         narrow_phase(context.frame, candidates, pairs, stats);
-        aabb.set_detection_ms(traversal.ms + (aabb.now() - before));
+        aabb.set_detection_ms(traversal.ms + (aabb.now() - before), traversal.ms);
         m_culler.analyse(info, traversal.ms, stats);
         stats.hybrid = info;
     }
