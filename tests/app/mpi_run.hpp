@@ -7,7 +7,9 @@
 // (docs/sanitizers.md); the serial tests check the same code for leaks. Under CI=true a build
 // without Open MPI, or no mpirun, fails the tests instead of skipping them.
 
+#include "support/ci.hpp"
 #include "support/cli_runner.hpp"
+#include "support/sanitizer_report.hpp"
 
 #include "collidescope/error.hpp"
 #include "collidescope/recorder/reader.hpp"
@@ -27,11 +29,6 @@ extern char** environ;
 
 namespace collidescope::testing_mpi {
 
-inline bool under_ci() {
-    const char* ci = std::getenv("CI");
-    return ci != nullptr && std::string(ci) == "true";
-}
-
 /// Why MPI runs cannot be tested here, or "".
 inline std::string mpi_missing() {
 #if !COLLIDESCOPE_MPI
@@ -45,8 +42,7 @@ inline std::string mpi_missing() {
     do {                                                                                                     \
         const std::string missing = ::collidescope::testing_mpi::mpi_missing();                              \
         if (!missing.empty()) {                                                                              \
-            if (::collidescope::testing_mpi::under_ci()) FAIL() << missing << " (CI=true: scripts/setup.sh installs Open MPI)"; \
-            GTEST_SKIP() << missing;                                                                         \
+            COLLIDESCOPE_SKIP_OR_FAIL_UNDER_CI(missing << " (scripts/setup.sh installs Open MPI)");         \
         }                                                                                                    \
     } while (0)
 
@@ -78,6 +74,7 @@ inline testing::CliResult run_mpi(int ranks, const std::vector<std::string>& arg
     result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     result.out = testing::read_text(dir / "mpi.stdout");
     result.err = testing::read_text(dir / "mpi.stderr");
+    testing::expect_no_sanitizer_report(result.err, result.exit_code, "mpirun -n " + std::to_string(ranks) + " collidescope");
     return result;
 }
 

@@ -7,7 +7,8 @@
 extern "C" {
 
 __attribute__((visibility("default"))) const char* __tsan_default_options() {
-    return "second_deadlock_stack=1";
+    // 86, as in the address build (address_defaults.cpp), not TSan's own 66.
+    return "exitcode=86:second_deadlock_stack=1";
 }
 
 __attribute__((visibility("default"))) const char* __tsan_default_suppressions() {

@@ -3,6 +3,7 @@
 #include "support/cli_runner.hpp"
 
 #include "support/brute_reference.hpp"
+#include "support/sanitizer_report.hpp"
 
 #include "collidescope/mesh.hpp"
 
@@ -69,6 +70,7 @@ CliProcess::CliProcess(const std::vector<std::string>& args, const std::filesyst
     const std::string err = (directory / "cli.stderr").string();
     std::vector<std::string> words = {COLLIDESCOPE_BIN};
     words.insert(words.end(), args.begin(), args.end());
+    for (const std::string& arg : args) m_command += (m_command.empty() ? "" : " ") + arg;
     std::vector<char*> argv;
     for (std::string& word : words) argv.push_back(word.data());
     argv.push_back(nullptr);
@@ -126,19 +128,24 @@ CliResult CliProcess::wait() {
     m_term_signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
     result.out = read_text(m_directory / "cli.stdout");
     result.err = read_text(m_directory / "cli.stderr");
+    expect_no_sanitizer_report(result.err, result.exit_code, "collidescope " + m_command);
     return result;
 }
 
-CliResult run_cli(const std::vector<std::string>& args, const std::filesystem::path& directory) {
+CliResult run_program(const std::string& program, const std::vector<std::string>& args,
+                      const std::filesystem::path& directory) {
     const std::filesystem::path out = directory / "cli.stdout";
     const std::filesystem::path err = directory / "cli.stderr";
     std::string command = "cd ";
     command += shell_quote(directory.string());
     command += " && ";
-    command += shell_quote(COLLIDESCOPE_BIN);
+    command += shell_quote(program);
+    std::string described = std::filesystem::path(program).filename().string();
     for (const std::string& arg : args) {
         command += ' ';
         command += shell_quote(arg);
+        described += ' ';
+        described += arg;
     }
     command += " </dev/null >";
     command += shell_quote(out.string());
@@ -151,7 +158,12 @@ CliResult run_cli(const std::vector<std::string>& args, const std::filesystem::p
     result.err = read_text(err);
     std::filesystem::remove(out);
     std::filesystem::remove(err);
+    expect_no_sanitizer_report(result.err, result.exit_code, described);
     return result;
+}
+
+CliResult run_cli(const std::vector<std::string>& args, const std::filesystem::path& directory) {
+    return run_program(COLLIDESCOPE_BIN, args, directory);
 }
 
 std::vector<FramePair> parse_pairs_tsv(const std::string& text) {

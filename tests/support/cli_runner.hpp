@@ -23,8 +23,14 @@ struct CliResult {
     std::vector<std::string> err_lines() const;
 };
 
-/// Runs COLLIDESCOPE_BIN with `args` (each passed as one shell word) in `directory`.
+/// Runs COLLIDESCOPE_BIN with `args` (each passed as one shell word) in `directory`. A
+/// sanitizer report on its stderr fails the test, whatever the exit code
+/// (support/sanitizer_report.hpp); so does CliProcess::wait.
 CliResult run_cli(const std::vector<std::string>& args, const std::filesystem::path& directory);
+
+/// run_cli for any program (a path), with the same sanitizer check.
+CliResult run_program(const std::string& program, const std::vector<std::string>& args,
+                      const std::filesystem::path& directory);
 
 /// COLLIDESCOPE_BIN running in the background, for tests that signal it or limit its writes.
 /// stdout and stderr go to cli.stdout and cli.stderr in its directory.
@@ -51,6 +57,7 @@ public:
 
 private:
     std::filesystem::path m_directory;
+    std::string m_command;  ///< its arguments, for messages
     int m_pid = -1;
     int m_term_signal = 0;
 };
