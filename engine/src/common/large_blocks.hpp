@@ -65,9 +65,9 @@ struct LargeBlockAllocator {
 #endif
         return static_cast<T*>(::operator new(bytes, std::align_val_t{alignof(T)}));
     }
-    void deallocate(T* p, std::size_t n) noexcept {
-        const std::size_t bytes = n * sizeof(T);
+    void deallocate(T* p, [[maybe_unused]] std::size_t n) noexcept {
 #if !defined(__SANITIZE_ADDRESS__)
+        const std::size_t bytes = n * sizeof(T);
         if (bytes >= k_large_block) return free_large_block(p, bytes);
 #endif
         ::operator delete(p, std::align_val_t{alignof(T)});
