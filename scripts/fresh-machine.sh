@@ -18,6 +18,9 @@
 #   --mirror URL      Debian mirror (default: the host's own bookworm source)
 #   --quiet           the commands' output to the logs only, not to stdout
 #   --print-commands  print the commands it would run, one per line, and exit
+#   --tests-not-run LOG  print the tests that ctest's summary in LOG lists as not run (skipped,
+#                     not run, disabled) and exit 1 when there are any, 0 when none: the check
+#                     applied to each command's log (no root needed)
 # Exit status: 0 every command passed, 1 a command failed, 2 this script could not run
 # (usage, not root, debootstrap failed).
 #
@@ -35,6 +38,7 @@ apt_cache=""
 mirror=""
 quiet=0
 print_only=0
+check_log=""
 
 log() { echo "fresh-machine: $*"; }
 die() { echo "fresh-machine: error: $*" >&2; exit 2; }
@@ -48,10 +52,29 @@ while [ $# -gt 0 ]; do
     --mirror) mirror=${2:?--mirror needs a URL}; shift 2 ;;
     --quiet) quiet=1; shift ;;
     --print-commands) print_only=1; shift ;;
+    --tests-not-run) check_log=${2:?--tests-not-run needs a log file}; shift 2 ;;
     -h|--help) sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
     *) die "unknown option '$1' (see --help)" ;;
   esac
 done
+
+# --- the checks of a command's log ---------------------------------------------------------------
+# The tests ctest lists under "The following tests did not run:" (skipped, not run, disabled):
+# on a bare system that setup made, every test must run, so a skip fails the command (a test
+# guard also fails under CI=true, tests/support/ci.hpp; this catches any other kind of skip).
+tests_not_run() {
+  awk '/^The following tests did not run:/ { listing = 1; next }
+       listing && /^[[:space:]]+[0-9]+ - / { print; next }
+       { listing = 0 }' "$1"
+}
+
+if [ -n "$check_log" ]; then
+  [ -r "$check_log" ] || die "cannot read $check_log"
+  not_run=$(tests_not_run "$check_log")
+  [ -z "$not_run" ] && exit 0
+  echo "$not_run"
+  exit 1
+fi
 
 # The command in the ```sh block right after <!-- MARKER --> in README.md.
 readme_command() {
@@ -209,6 +232,37 @@ git -c advice.detachedHead=false clone -q --no-hardlinks "$repo" "$root$checkout
 git -C "$root$checkout" -c advice.detachedHead=false checkout -q --detach "$(git -C "$repo" rev-parse HEAD)"
 log "cloned HEAD $head into $checkout"
 
+# The phases of a command's log: the traced commands (marker lines "+fresh-machine-phase EPOCH
+# COMMAND", the last one "(end)"), each with the seconds until the next, and below a traced
+# command the phases it reported itself ("sanitize: phase NAME took N s").
+phase_table() {
+  local label=$1 log_file=$2
+  awk -v marker="$phase_marker" -v label="$label" '
+    function flush() {
+      if (name != "" && name !~ /^cd /) {
+        printf "fresh-machine:   %-4s %-62s %6d s\n", label, substr(name, 1, 62), epoch - start
+        for (k = 1; k <= inner; ++k) print inner_lines[k]
+      }
+      inner = 0
+    }
+    index($0, marker " ") == 1 {
+      epoch = $2
+      flush()
+      start = $2
+      name = $0
+      sub(/^[^ ]+ [^ ]+ /, "", name)
+      next
+    }
+    /^sanitize: phase .* took [0-9]+ s$/ {
+      line = $0
+      sub(/^sanitize: phase /, "", line)
+      seconds = line; sub(/.* took /, "", seconds); sub(/ s$/, "", seconds)
+      sub(/ took [0-9]+ s$/, "", line)
+      inner_lines[++inner] = sprintf("fresh-machine:          %-57s %6d s", "sanitize.sh: " line, seconds)
+    }
+  ' "$log_file"
+}
+
 # --- the commands ------------------------------------------------------------------------------
 environment=(HOME=/root LANG=C.UTF-8 TERM=dumb PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin)
 for variable in CI http_proxy https_proxy no_proxy HTTP_PROXY HTTPS_PROXY NO_PROXY; do
@@ -217,6 +271,10 @@ done
 
 declare -A result seconds
 failed=""
+# Each simple command of a README command is traced (bash's xtrace; the command's text is run as
+# it is written) with the time it started, so the report can say where the time went; the
+# scripts it starts are not traced, and scripts/sanitize.sh says its own phases' times.
+phase_marker="+fresh-machine-phase"
 for name in "${names[@]}"; do
   if [ -n "$failed" ]; then
     result[$name]="not run (command ($failed) failed)"
@@ -224,19 +282,27 @@ for name in "${names[@]}"; do
   fi
   log "command ($name): ${to_run[$name]}"
   started=$SECONDS
+  traced="PS4='$phase_marker \$(date +%s) '; set -x; cd $checkout && ${to_run[$name]}"
   set +e
   if [ "$quiet" -eq 1 ]; then
-    chroot "$root" /usr/bin/env -i "${environment[@]}" bash -c "cd $checkout && ${to_run[$name]}" \
+    chroot "$root" /usr/bin/env -i "${environment[@]}" bash -c "$traced" \
       </dev/null >"$logs/command-$name.log" 2>&1
     status=$?
   else
-    chroot "$root" /usr/bin/env -i "${environment[@]}" bash -c "cd $checkout && ${to_run[$name]}" \
+    chroot "$root" /usr/bin/env -i "${environment[@]}" bash -c "$traced" \
       </dev/null 2>&1 | tee "$logs/command-$name.log"
     status=${PIPESTATUS[0]}
   fi
   set -e
   seconds[$name]=$((SECONDS - started))
-  if [ "$status" -eq 0 ]; then
+  echo "$phase_marker $(date +%s) (end)" >>"$logs/command-$name.log"
+  not_run=$(tests_not_run "$logs/command-$name.log")
+  if [ "$status" -eq 0 ] && [ -n "$not_run" ]; then
+    result[$name]="FAILED (tests skipped or not run)"
+    failed=$name
+    log "command ($name): ctest passed, but these tests did not run (a skip is a failure here):"
+    echo "$not_run" | sed 's/^/  | /'
+  elif [ "$status" -eq 0 ]; then
     result[$name]="passed"
   else
     result[$name]="FAILED (exit $status)"
@@ -252,6 +318,16 @@ for name in "${names[@]}"; do
   printf 'fresh-machine:   command (%s)  %-32s %s\n' "$name" "${result[$name]}" \
     "${seconds[$name]:+${seconds[$name]} s, log $logs/command-$name.log}"
 done
+echo
+log "phase times (cold: a new system, nothing built; the sum is CI's time less the clone):"
+printf 'fresh-machine:   %-67s %6d s\n' "debootstrap" "$debootstrap_seconds"
+total=$debootstrap_seconds
+for name in "${names[@]}"; do
+  [ -f "$logs/command-$name.log" ] || continue
+  phase_table "($name)" "$logs/command-$name.log"
+  total=$((total + ${seconds[$name]:-0}))
+done
+printf 'fresh-machine:   %-67s %6d s\n' "total" "$total"
 if [ -n "$failed" ]; then
   echo
   log "the last lines of command ($failed):"

@@ -2,6 +2,8 @@
 // Debian's assimp-testmodels in the mesh and scene tests: where a model lies, and what to do
 // when the package is missing (a skip on a developer's machine, a failure under CI=true).
 
+#include "support/ci.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -26,6 +28,5 @@ inline std::filesystem::path find(const std::string& relative) {
 #define REQUIRE_TESTMODEL(var, relative)                                                              \
     const std::filesystem::path var = ::collidescope::testmodels::find(relative);                     \
     if (var.empty()) {                                                                                \
-        if (std::getenv("CI") != nullptr) FAIL() << "CI: assimp-testmodels lacks " << (relative);     \
-        GTEST_SKIP() << "assimp-testmodels not installed (" << (relative) << ")";                     \
+        COLLIDESCOPE_SKIP_OR_FAIL_UNDER_CI("assimp-testmodels not installed (" << (relative) << ")"); \
     }
