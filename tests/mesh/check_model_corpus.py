@@ -13,6 +13,12 @@ textures and buffers included: a user may pass any file.
 ctest entries that run in parallel. --summary prints each file's outcome (TSV) and counts
 of the refusals by their reason, the data behind docs/robustness.md.
 
+Which files load is pinned: corpus_loads.txt beside this script lists them (relative paths,
+sorted). A listed file that is refused, an unlisted one that loads, or a listed one missing from
+the corpus fails the sweep, so a regression that refuses every model cannot pass as a run of
+clean refusals. --write-pin rewrites the list from a whole sweep (no --shard), after a change
+meant to alter it.
+
 A missing corpus directory is a skip (exit 77) on a developer's machine and a failure under
 CI (env CI=true): the package is installed by scripts/setup.sh.
 """
@@ -29,6 +35,42 @@ import time
 
 SKIP = 77
 DEFAULT_MODELS = "/usr/share/assimp/models"
+DEFAULT_PIN = os.path.join(os.path.dirname(os.path.abspath(__file__)), "corpus_loads.txt")
+PIN_HEADER = """\
+# The files of Debian 12's assimp-testmodels (5.2.5) that `collidescope check` loads, relative to
+# /usr/share/assimp/models, sorted; the others are refused with one line. check_model_corpus.py fails
+# a sweep where a listed file is refused or an unlisted one loads: after a change that should alter
+# this, regenerate it with --write-pin (docs/robustness.md) and say why in the commit.
+"""
+
+
+def read_pin(path):
+    with open(path, encoding="utf-8") as pin:
+        return {line.rstrip("\n") for line in pin if line.strip() and not line.startswith("#")}
+
+
+def write_pin(path, loaded):
+    with open(path, "w", encoding="utf-8") as pin:
+        pin.write(PIN_HEADER)
+        for name in sorted(loaded, key=lambda n: n.encode("utf-8")):
+            pin.write(name + "\n")
+
+
+def pin_failures(results, all_files, shard_files, pinned, models):
+    """(path, kind, detail) for each difference between this shard's outcomes and the pin."""
+    failures = []
+    for path, outcome, _, detail in results:
+        name = os.path.relpath(path, models)
+        if name in pinned and outcome == "refused":
+            failures.append((path, "was loading", "pinned in corpus_loads.txt, now refused: " + detail))
+        elif name not in pinned and outcome == "loaded":
+            failures.append((path, "not pinned", "loads but is not in corpus_loads.txt (--write-pin)"))
+    # A pinned file the corpus lacks is reported by the shard it would have fallen in: shard 0.
+    if shard_files and shard_files[0] == all_files[0]:
+        present = {os.path.relpath(path, models) for path in all_files}
+        for name in sorted(pinned - present):
+            failures.append((os.path.join(models, name), "pinned but missing", "not in the corpus"))
+    return failures
 
 
 def corpus_files(models):
@@ -95,13 +137,19 @@ def main():
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--timeout", type=float, default=10.0)
     parser.add_argument("--summary", action="store_true")
+    parser.add_argument("--pin", default=DEFAULT_PIN)
+    parser.add_argument("--write-pin", action="store_true")
     args = parser.parse_args()
 
     missing = missing_corpus(args.models)
     if missing is not None:
         return missing
     index, count = (int(part) for part in args.shard.split("/"))
-    files = corpus_files(args.models)[index::count]
+    if args.write_pin and count != 1:
+        print("FAIL: --write-pin needs the whole corpus (no --shard)", file=sys.stderr)
+        return 2
+    all_files = corpus_files(args.models)
+    files = all_files[index::count]
     if not files:
         print("FAIL: no files in %s (shard %s)" % (args.models, args.shard), file=sys.stderr)
         return 1
@@ -110,6 +158,12 @@ def main():
         results = list(pool.map(lambda path: run_one(args.binary, path, args.timeout), files))
 
     failures = [r for r in results if r[1] not in ("loaded", "refused")]
+    if args.write_pin:
+        write_pin(args.pin, [os.path.relpath(r[0], args.models) for r in results if r[1] == "loaded"])
+    else:
+        pinned = read_pin(args.pin)
+        failures += [(path, kind, 0.0, detail)
+                     for path, kind, detail in pin_failures(results, all_files, files, pinned, args.models)]
     outcomes = collections.Counter(r[1] for r in results)
     slowest = max(results, key=lambda r: r[2])
     if args.summary:
