@@ -91,7 +91,10 @@ def test_stats_have_the_names_of_check_stats(cli, tmp_path):
 def test_the_gil_is_released_during_step():
     """A Python thread keeps running while step() runs: its iterations span most of the step
     (without the release they could only fall in the few ms after it returns)."""
-    scene = collidescope.scene("C")  # 40,000 triangles: the first step builds the trees (~50 ms)
+    # C's large preset: its first step builds the trees and tests the frame, some 100 ms on a
+    # 2-core machine (the default preset's first step took 18 ms there by 2026-11-27, too short
+    # to tell a thread that ran beside it from one that ran after it).
+    scene = collidescope.scene("C:large")
     session = collidescope.Session(scene.triangles(), method="aabb", threads=1)
     positions = scene.positions(8)
     ticks = []

@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include <deque>
 #include <iostream>
 #include <set>
@@ -56,7 +58,9 @@ TEST_P(DataSets, HybridAndAdaptiveMatchBruteEveryFrame) {
         config.method = method;
         pipelines.push_back(std::make_unique<Pipeline>(config));
     }
-    std::uint32_t cost_gpu_frames = 0;  // frames where adaptive-cost ran something else than AABB
+    // Frames where adaptive-thesis and adaptive-cost ran something else than AABB alone.
+    std::uint32_t thesis_gpu_frames = 0;
+    std::uint32_t cost_gpu_frames = 0;
     for (std::uint32_t f = 0; f < scene.source->frame_count(); ++f) {
         const Frame frame = scene.source->frame(f);
         const std::vector<TrianglePair> expected = brute.process(frame).colliding_pairs;
@@ -66,9 +70,13 @@ TEST_P(DataSets, HybridAndAdaptiveMatchBruteEveryFrame) {
             if (m > 0) {
                 ASSERT_TRUE(result.stats.decision.has_value());
             }
+            if (m == 1 && result.stats.decision->action != k_action_aabb) ++thesis_gpu_frames;
             if (m == 2 && result.stats.decision->action != k_action_aabb) ++cost_gpu_frames;
         }
     }
+    std::printf("%s: adaptive-thesis left AABB on %u frames, adaptive-cost on %u\n", GetParam().c_str(),
+                thesis_gpu_frames, cost_gpu_frames);
+    EXPECT_GT(thesis_gpu_frames, 0u) << "the thesis policy never left AABB: its GPU paths went untested";
     if (GetParam() != "A") {
         EXPECT_GT(cost_gpu_frames, 0u) << "the cost policy never left AABB: its GPU paths went untested";
     }

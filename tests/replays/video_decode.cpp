@@ -11,6 +11,7 @@ extern "C" {
 
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <memory>
 
 namespace collidescope::testing {
@@ -52,8 +53,8 @@ void receive(Decoder& d, DecodedVideo& out) {
             out.height = d.frame->height;
             const char* name = av_get_pix_fmt_name(static_cast<AVPixelFormat>(d.frame->format));
             out.pixel_format = name != nullptr ? name : "";
-            out.first_rgba = to_rgba(d.frame);
         }
+        out.rgba.push_back(to_rgba(d.frame));
         ++out.frames;
         av_frame_unref(d.frame);
     }
@@ -110,6 +111,19 @@ double mean_rgb_difference(const std::vector<std::uint8_t>& a, const std::vector
         for (std::size_t c = 0; c < 3; ++c) sum += std::abs(int(a[i + c]) - int(b[i + c]));
     }
     return sum / double(a.size() / 4 * 3);
+}
+
+std::vector<FrameMatch> match_frames(const DecodedVideo& video, const std::vector<std::vector<std::uint8_t>>& images) {
+    std::vector<FrameMatch> matches;
+    for (const std::vector<std::uint8_t>& frame : video.rgba) {
+        FrameMatch best{0, std::numeric_limits<double>::infinity()};
+        for (std::size_t i = 0; i < images.size(); ++i) {
+            const double difference = mean_rgb_difference(frame, images[i]);
+            if (difference < best.difference) best = {i, difference};
+        }
+        matches.push_back(best);
+    }
+    return matches;
 }
 
 }  // namespace collidescope::testing
