@@ -1,6 +1,7 @@
 // --aabb-* and --rebuild-* options -> AabbOptions.
 
 #include "aabb_cli_options.hpp"
+#include "number_checks.hpp"
 
 #include "named_cli_option.hpp"
 
@@ -18,18 +19,18 @@ void add_aabb_options(CLI::App& command, AabbOptions& options) {
         ->group(group);
     command.add_option("--rebuild-quality-limit", options.quality_limit,
                        "Quality rule: rebuild when the SAH cost exceeds this multiple of the post-build cost")
-        ->check(CLI::PositiveNumber)
+        ->check(positive_number("(a multiple of the SAH cost right after a build)"))
         ->capture_default_str()
         ->group(group);
     command.add_option("--rebuild-payback-frames", options.payback_frames,
                        "Quality rule: rebuild only when the detection time it can save pays for the build "
                        "within this many frames (0: the SAH cost alone decides)")
-        ->check(CLI::NonNegativeNumber)
+        ->check(non_negative_number("of frames (0: the SAH cost alone decides)"))
         ->capture_default_str()
         ->group(group);
     command.add_option("--rebuild-fraction", options.thesis_fraction,
                        "Thesis rule: rebuild when detection time exceeds this fraction of a rebuild's time")
-        ->check(CLI::PositiveNumber)
+        ->check(positive_number("(a fraction of a rebuild's time)"))
         ->capture_default_str()
         ->group(group);
     add_named_option(command, "--background-rebuild", options.background, k_aabb_background_names,

@@ -3,6 +3,7 @@
 // that every method returned exactly the same pairs on every frame.
 
 #include "aabb_cli_options.hpp"
+#include "number_checks.hpp"
 #include "bench_report.hpp"
 #include "bench_run.hpp"
 #include "commands.hpp"
@@ -179,10 +180,10 @@ Command add_bench_command(CLI::App& app) {
         ->delimiter(',')
         ->check(CLI::IsMember(method_names()));
     command->add_option("--repeat", options->repeat, "Runs per method; each frame reports the median")
-        ->check(CLI::Range(1, 1000))
+        ->check(whole_number(1, 1000, "of runs per method"))
         ->capture_default_str();
     command->add_option("--threads", options->threads, "Worker threads (0 = all hardware threads)")
-        ->check(CLI::NonNegativeNumber)
+        ->check(whole_number(0, 1024, "of worker threads (0: all hardware threads)"))
         ->capture_default_str();
     command->add_option("--frames", options->frames, "Frames of every scene: A:B (half-open), A:, :B or N")
         ->type_name("A:B");

@@ -1,6 +1,7 @@
 // `collidescope compare`: the pairs and stage times of two recordings.
 
 #include "commands.hpp"
+#include "number_checks.hpp"
 
 #include "collidescope/recorder/compare.hpp"
 #include "collidescope/recorder/reader.hpp"
@@ -75,7 +76,9 @@ Command add_compare_command(CLI::App& app) {
     CLI::App* compare = app.add_subcommand("compare", "Compare the pairs and times of two recordings; exit 1 when pairs differ");
     compare->add_option("a", options->a, "First recording")->required()->type_name("A.h5");
     compare->add_option("b", options->b, "Second recording")->required()->type_name("B.h5");
-    compare->add_option("--max-frames", options->max_frames, "Differing frames to list")->capture_default_str();
+    compare->add_option("--max-frames", options->max_frames, "Differing frames to list")
+        ->check(whole_number(0, 1000000, "of frames"))
+        ->capture_default_str();
     compare->footer("Frames are matched by scene frame number. Exit codes: 0 the same frames with identical pairs,\n"
                     "1 pairs (or the recorded frames) differ, 2 error.");
     return {compare, [options] { return run_compare(*options); }};

@@ -1,6 +1,7 @@
 // --gpu-* options -> GpuCullConfig.
 
 #include "gpu_cli_options.hpp"
+#include "number_checks.hpp"
 
 #include "named_cli_option.hpp"
 
@@ -18,7 +19,7 @@ void add_gpu_options(CLI::App& command, GpuOptions& options) {
                      "the thesis) or flags (one draw, per-triangle flags in a storage buffer)")
         ->group(group);
     command.add_option("--gpu-resolution", options.resolution, "Width and height of each view's depth buffer")
-        ->check(CLI::Range(1, 8192))
+        ->check(whole_number(1, 8192, "of pixels"))
         ->capture_default_str()
         ->group(group);
     command.add_option("--gpu-views", options.views, "View axes in the order used: one to three of x, y, z")
@@ -26,7 +27,7 @@ void add_gpu_options(CLI::App& command, GpuOptions& options) {
         ->group(group);
     command.add_option("--triangles-per-query", options.triangles_per_query,
                        "P: triangles per occlusion query (thesis 4.2.3); the first P when adaptive")
-        ->check(CLI::Range(1u, 1u << 20))
+        ->check(whole_number(1, 1 << 20, "of triangles per query"))
         ->capture_default_str()
         ->group(group);
     command.add_flag("--gpu-fixed-views", options.fixed_views,

@@ -1,6 +1,7 @@
 // `collidescope join`: recordings of contiguous frame ranges of one session -> one recording.
 
 #include "commands.hpp"
+#include "number_checks.hpp"
 
 #include "collidescope/recorder/join.hpp"
 
@@ -51,6 +52,7 @@ Command add_join_command(CLI::App& app) {
                    "small, but the parts are then the data and must stay beside the output (moved with it)");
     join->add_option("--virtual-min-rows", options->join.virtual_min_rows,
                      "With --virtual: map a dataset when the parts hold at least this many of its rows each, on average")
+        ->check(whole_number(0, std::int64_t{1} << 40, "of rows"))
         ->capture_default_str();
     join->footer("The parts must come from one session (scene, method, options, build) with frame ranges that meet\n"
                  "exactly. The output is written as FILE.partial and renamed when complete; it reads as the recording\n"

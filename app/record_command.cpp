@@ -1,7 +1,8 @@
 // `collidescope record`: runs a scene's frames through a method and writes the session trace
-// to one HDF5 file (recorder/, docs/recording.md).
+// to one HDF5 file (recorder/, docs/reference/recording.md).
 
 #include "commands.hpp"
+#include "number_checks.hpp"
 #include "engine_cli_options.hpp"
 #include "frame_range.hpp"
 #include "interrupt.hpp"
@@ -37,7 +38,7 @@ struct RecordOptions {
     EngineOptions engine;           ///< --method, --self, --threads, --gpu-*, --aabb-*
 };
 
-constexpr const char* k_footer = R"(Writes one HDF5 file (schema: docs/recording.md; read it with h5py, h5dump,
+constexpr const char* k_footer = R"(Writes one HDF5 file (schema: docs/reference/recording.md; read it with h5py, h5dump,
 `collidescope inspect`, `validate`, `compare` or the scripts in scripts/). The file is written
 in SWMR mode and flushed after every frame (every group of frames that waited for the writer):
 a killed recording keeps every frame flushed before it.
@@ -195,11 +196,11 @@ Command add_record_command(CLI::App& app) {
         ->capture_default_str();
     record->add_option("--compression", options->compression,
                        "gzip level (with shuffle) of positions, pairs and triangles; 0 = uncompressed")
-        ->check(CLI::Range(0, 9))
+        ->check(whole_number(0, 9, "(a gzip level; 0: uncompressed)"))
         ->capture_default_str();
     add_engine_options(*record, options->engine);
     record->add_option("--writer-nice", options->writer_nice, "Nice increment of the writer thread (0 = same priority)")
-        ->check(CLI::Range(0, 19))
+        ->check(whole_number(0, 19, "(a nice increment)"))
         ->capture_default_str();
     record->add_option("--join", options->join,
                        "Under mpirun: virtual (FILE maps the ranks' parts, kept in FILE.parts/, which must stay with it) or "

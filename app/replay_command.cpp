@@ -1,7 +1,8 @@
 // `collidescope replay`: a recording -> annotated PNG frames, a contact sheet and/or a video clip, or two
-// recordings side by side with --diff (replays/, docs/replay.md).
+// recordings side by side with --diff (replays/, docs/how-to/replay.md).
 
 #include "commands.hpp"
+#include "number_checks.hpp"
 #include "frame_range.hpp"
 #include "interrupt.hpp"
 #include "named_cli_option.hpp"
@@ -51,9 +52,9 @@ recording lacks is said on the image and on stderr. Same recording and options: 
 --diff A.h5 B.h5 writes DIR/diff_NNNN.png: the frames both hold, A left and B right, the pairs
 only one of them found in green. --video FILE.mp4|FILE.gif encodes the frames as one clip
 (H.264 MP4 or animated GIF, through FFmpeg's libraries), with or without -o DIR; a failed
-clip leaves no file. See docs/replay.md.
+clip leaves no file. See docs/how-to/replay.md.
 SIGINT or SIGTERM stops after the frames being rendered: every PNG written is complete.
-Under mpirun (docs/mpi.md) each rank renders one block of the frames into DIR, the same files
+Under mpirun (docs/how-to/mpi.md) each rank renders one block of the frames into DIR, the same files
 a serial replay writes; with --video (which then needs -o DIR) rank 0 encodes the clip from
 them at the end; --diff runs serially only.
 Exit codes: 0 written (--diff: same pairs), 1 (--diff only) the pairs differ, 2 error, 130 or
@@ -89,12 +90,10 @@ replays::ReplayOptions replay_options(const ReplayCliOptions& cli) {
     options.camera = replays::parse_camera(cli.camera);
     if (!cli.up.empty()) options.camera.up = replays::parse_up_axis(cli.up);
     options.layers = replays::parse_layers(cli.show);
-    if (cli.threads < 0) throw InputError("--threads must be 0 (all hardware threads) or more");
     options.threads = cli.threads;
     options.gl = cli.gl;
     options.contact_sheet = cli.contact_sheet;
     options.sheet_selection = cli.sheet_frames;
-    if (cli.sheet_count < 1) throw InputError("--sheet-count must be at least 1");
     options.sheet_count = cli.sheet_count;
     return options;
 }
@@ -277,6 +276,7 @@ Command add_replay_command(CLI::App& app) {
         ->type_name("LIST")
         ->capture_default_str();
     replay->add_option("--threads", options->threads, "Render threads, each with its own GL context; 0 = all hardware threads")
+        ->check(whole_number(0, 1024, "of render threads (0: all hardware threads)"))
         ->capture_default_str();
     add_named_option(*replay, "--gl", options->gl, k_gl_backend_names,
                      "GL context: auto (a GPU through EGL if any, else OSMesa), osmesa or egl");
@@ -284,7 +284,9 @@ Command add_replay_command(CLI::App& app) {
         ->type_name("FILE.png");
     add_named_option(*replay, "--sheet-frames", options->sheet_frames, replays::k_sheet_selection_names,
                      "Contact sheet frames: every, collisions or slowest");
-    replay->add_option("--sheet-count", options->sheet_count, "Frames on the contact sheet, at most")->capture_default_str();
+    replay->add_option("--sheet-count", options->sheet_count, "Frames on the contact sheet, at most")
+        ->check(whole_number(1, 10000, "of frames"))
+        ->capture_default_str();
     replay->add_flag("--diff", options->diff, "Compare two recordings side by side, differing pairs highlighted");
     replay->add_flag("-q,--quiet", options->quiet, "No rate line on stderr");
     return {replay, [options] { return run_replay(*options); }};

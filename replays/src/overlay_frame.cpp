@@ -3,16 +3,16 @@
 
 #include "mesh_renderer.hpp"
 #include "overlay.hpp"
+#include "overlay_text.hpp"
 
-#include "collidescope/adaptive_options.hpp"
 #include "collidescope/stats.hpp"
 
 #include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <memory>
+#include <optional>
 
 namespace collidescope::replays {
 namespace {
@@ -26,16 +26,7 @@ ImU32 colour32(const std::array<float, 3>& c, float alpha = 1.0f) {
     return ImGui::ColorConvertFloat4ToU32(ImVec4(c[0], c[1], c[2], alpha));
 }
 
-std::string format(const char* pattern, double value) {
-    char text[64];
-    std::snprintf(text, sizeof text, pattern, value);
-    return text;
-}
-
-// The name of a recorded decision's policy (an AdaptivePolicy's value).
-std::string policy_name(double value) {
-    return std::string(option_name(k_adaptive_policy_names, static_cast<AdaptivePolicy>(static_cast<int>(value))));
-}
+std::string format(const char* pattern, double value) { return measured(pattern, value, "-"); }
 
 bool begin_window(const char* name, const Rect& rect) {
     ImGui::SetNextWindowPos(ImVec2(float(rect.x), float(rect.y)));
@@ -50,24 +41,14 @@ void heading(const char* text) {
 
 void decision_lines(const FrameData& frame) {
     heading("Decision (thesis 4.4)");
+    const std::vector<std::string> lines = decision_text(frame);
     if (frame.decision.empty()) {
         ImGui::PushTextWrapPos(0);
-        ImGui::TextDisabled("not recorded (method %s; record --method adaptive)", frame.method.c_str());
+        ImGui::TextDisabled("%s", lines.front().c_str());
         ImGui::PopTextWrapPos();
         return;
     }
-    const auto action = std::uint8_t(value_of(frame.decision, "action"));
-    const auto reason = std::uint8_t(value_of(frame.decision, "reason"));
-    ImGui::Text("ran %s: %s%s%s", decision_action_name(action), decision_reason_name(reason),
-                value_of(frame.decision, "switched") == 1 ? ", switched" : "",
-                value_of(frame.decision, "rebuilding") == 1 ? ", rebuild in flight" : "");
-    ImGui::Text("AABB_T %s  GPU_T %s  hybrid %s", format("%.3g ms", value_of(frame.decision, "aabb_ms")).c_str(),
-                format("%.3g ms", value_of(frame.decision, "gpu_ms")).c_str(),
-                format("%.3g ms", value_of(frame.decision, "hybrid_ms")).c_str());
-    ImGui::Text("rebuild average %s  (%s policy)", format("%.3g ms", value_of(frame.decision, "rebuild_avg_ms")).c_str(),
-                policy_name(value_of(frame.decision, "policy")).c_str());
-    ImGui::Text("exploration %.3f  draw %s", value_of(frame.decision, "exploration"),
-                format("%.3f", value_of(frame.decision, "draw")).c_str());
+    for (const std::string& line : lines) ImGui::TextUnformatted(line.c_str());
 }
 
 void stage_bars(const FrameData& frame) {
@@ -92,15 +73,8 @@ void pair_lines(const FrameData& frame) {
     ImGui::Text("object pairs %.0f   exact tests %.0f", value_of(frame.counts, "object_pairs"),
                 value_of(frame.counts, "exact_tests"));
     ImGui::Text("triangles %.0f", value_of(frame.counts, "triangles"));
-    if (!frame.aabb.empty()) {
-        const std::string reasons = rebuild_reason_names(std::uint8_t(value_of(frame.aabb, "rebuild_reasons")));
-        ImGui::Text("AABB: rebuilt %.0f (%s), tree quality %.2f", value_of(frame.aabb, "rebuilt_objects"),
-                    reasons.empty() ? "no rebuild" : reasons.c_str(), value_of(frame.aabb, "tree_quality"));
-    }
-    if (!frame.hybrid.empty()) {
-        ImGui::Text("hybrid: TRI_1 %.0f  TRI_R %.0f  TRI_2 %.0f", value_of(frame.hybrid, "tri_1"),
-                    value_of(frame.hybrid, "tri_r"), value_of(frame.hybrid, "tri_2"));
-    }
+    if (const std::optional<std::string> aabb = aabb_text(frame)) ImGui::TextUnformatted(aabb->c_str());
+    if (const std::optional<std::string> hybrid = hybrid_text(frame)) ImGui::TextUnformatted(hybrid->c_str());
 }
 
 void view_matrix(const FrameData& frame) {
@@ -138,8 +112,7 @@ void gpu_lines(const FrameData& frame) {
     ImGui::Text("PCS objects %.0f -> %.0f, triangles %.0f -> %.0f", value_of(frame.gpu, "pcs_objects_in"),
                 value_of(frame.gpu, "pcs_objects_out"), value_of(frame.gpu, "pcs_triangles_in"),
                 value_of(frame.gpu, "pcs_triangles_out"));
-    ImGui::Text("queries %.0f   P %.0f tris/query   O %s", value_of(frame.gpu, "queries"),
-                value_of(frame.gpu, "triangles_per_query"), format("%.3g ms", value_of(frame.gpu, "query_ms")).c_str());
+    ImGui::TextUnformatted(gpu_queries_text(frame).c_str());
     ImGui::TextDisabled("pass       tested hidden queries   samples  P");
     for (const GpuPassInfo& pass : frame.passes) {
         ImGui::Text("%s %c %s %7u %6u %7u %9llu %2u", pass.level == 0 ? "obj" : "tri", k_axes[pass.view % 3],

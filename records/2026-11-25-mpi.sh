@@ -3,7 +3,7 @@
 # for `check` and `record`; a block's cold start; `join` against copying the file once.
 # Then (section "virtual"): `join --virtual` against copying the parts once and the copying
 # join, and `record` serial against `mpirun -np 2` with the (default) virtual join.
-# Usage: docs/experiments/2026-11-25-mpi.sh BUILD_DIR WORK_DIR [RECORD_SCENE] [JOIN_SCENE] [SECTIONS]
+# Usage: records/2026-11-25-mpi.sh BUILD_DIR WORK_DIR [RECORD_SCENE] [JOIN_SCENE] [SECTIONS]
 # SECTIONS: all (default), or virtual (only the virtual join's sections, which record
 # RECORD_SCENE whole twice: E4:large writes about 11 GiB per recording; the big files are
 # removed at the end). Writes timings on stdout (and the load average before each section).

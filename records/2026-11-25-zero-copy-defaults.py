@@ -2,7 +2,7 @@
 """Pairs of a Python Session (float64 C-contiguous arrays: the zero-copy step) against
 `collidescope check --pairs` on built-in scenes at their default presets, every frame.
 
-Usage: PYTHONPATH=build/python /usr/bin/python3 docs/experiments/2026-11-25-zero-copy-defaults.py \
+Usage: PYTHONPATH=build/python /usr/bin/python3 records/2026-11-25-zero-copy-defaults.py \
            build/app/collidescope C A B D demo E1 E2 E3 E4
 (too slow for ctest on a 2-core machine; the tests run the small presets.)
 """
