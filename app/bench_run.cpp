@@ -78,7 +78,7 @@ BenchScene run_bench_scene(const Scene& scene, const BenchPlan& plan,
     // Method by method, each running the whole animation alone: a method's background work
     // (the AABB rebuild on its worker thread) must never run inside another method's timed
     // frame. Interleaving the methods frame by frame did that: whichever method came second
-    // paid for the first one's rebuild, 8-14% of its total on E (docs/datasets.md, "bench").
+    // paid for the first one's rebuild, 8-14% of its total on E (docs/reference/datasets.md, "bench").
     std::vector<std::vector<TrianglePair>> reference(frames);  // the first method's, first run
     for (int rep = 0; rep < plan.repeat; ++rep) {
         for (std::size_t m = 0; m < methods; ++m) {

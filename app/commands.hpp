@@ -18,7 +18,7 @@ struct Command {
 /// `collidescope check`: collision pairs per frame of a scene (check_command.cpp).
 Command add_check_command(CLI::App& app);
 
-/// `collidescope record`: a session's trace to one HDF5 file (record_command.cpp, docs/recording.md).
+/// `collidescope record`: a session's trace to one HDF5 file (record_command.cpp, docs/reference/recording.md).
 Command add_record_command(CLI::App& app);
 
 /// `collidescope inspect`: what a recording holds, as text or JSON (inspect_command.cpp).

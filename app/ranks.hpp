@@ -1,6 +1,6 @@
 #pragma once
 // Frame-parallel runs under MPI: `mpirun -np N collidescope check|record|replay ...` with the same
-// arguments as a serial run (docs/mpi.md). Each rank takes one contiguous block of the frames
+// arguments as a serial run (docs/how-to/mpi.md). Each rank takes one contiguous block of the frames
 // (cold: its trees are built at its first frame, the adaptive policy starts from its priors),
 // writes its outputs to files of its own, and rank 0 assembles them, in frame order, into the
 // outputs a serial run writes. Without mpirun (or with one rank) every function here is the

@@ -1,5 +1,5 @@
 #pragma once
-// One fuzz input through one reader, exactly as the app reads it (fuzz/, docs/fuzzing.md).
+// One fuzz input through one reader, exactly as the app reads it (fuzz/, docs/how-to/fuzzing.md).
 //
 // Each entry returns Accepted when the input was read, Rejected when the library threw
 // InputError (the expected answer to bad input); anything else (another exception, a crash,

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Frame-parallel runs (docs/mpi.md): 1 rank x 2 threads against 2 ranks x 1 thread (and 1 x 1)
+# Frame-parallel runs (docs/how-to/mpi.md): 1 rank x 2 threads against 2 ranks x 1 thread (and 1 x 1)
 # for `check` and `record`; a block's cold start; `join` against copying the file once.
 # Then (section "virtual"): `join --virtual` against copying the parts once and the copying
 # join, and `record` serial against `mpirun -np 2` with the (default) virtual join.

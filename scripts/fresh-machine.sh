@@ -3,7 +3,7 @@
 # made for the run with debootstrap (minbase: no compiler, no cmake, nothing that
 # scripts/setup.sh does not install), in a fresh clone of this repository's HEAD, command (a)
 # then command (b), verbatim as README.md has them. Reports each with its time, and the last
-# lines of a failure. CI runs it (.ci/run); docs/fresh-machine.md says how and why.
+# lines of a failure. CI runs it (.ci/run); docs/how-to/fresh-machine.md says how and why.
 #
 # Usage: scripts/fresh-machine.sh [OPTIONS]
 #   --commands LIST   what to run, in order, comma-separated (default a,b):

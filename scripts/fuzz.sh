@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds and runs the libFuzzer targets of the input readers (docs/fuzzing.md). Not part of
+# Builds and runs the libFuzzer targets of the input readers (docs/how-to/fuzzing.md). Not part of
 # CI: a run is measured in tens of minutes. Needs clang-14 and its runtime (Debian packages,
 # installed here when missing, like setup.sh does; run setup.sh first for the rest).
 #

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 23's peer comparison (docs/experiments/2026-11-25-cloth-peers.md): `aabb` at 1 and 2
+# Issue 23's peer comparison (records/2026-11-25-cloth-peers.md): `aabb` at 1 and 2
 # threads against the peer users would assemble (Embree 3 refit + CGAL exact predicates with
 # the self rule, bench/peers/bench_embree_cgal_peers) and FCL, on the cloth family at the large
 # preset (self-collision on) and the thesis data sets at the default preset (objects only, as

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds collidescope with sanitizers and runs the whole test suite under them
-# (docs/sanitizers.md). Usage: scripts/sanitize.sh address|thread [CTEST_ARGS...]
+# (docs/how-to/sanitizers.md). Usage: scripts/sanitize.sh address|thread [CTEST_ARGS...]
 #   address: AddressSanitizer + UndefinedBehaviorSanitizer, in build-asan/
 #   thread:  ThreadSanitizer (with the TBB bridge, tests/sanitize/), in build-tsan/
 # Incremental: an existing build directory is reused. The options and suppressions are built

@@ -17,7 +17,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # recorder
   libhdf5-dev hdf5-tools
-  # frame-parallel check/record/replay under mpirun (docs/mpi.md)
+  # frame-parallel check/record/replay under mpirun (docs/how-to/mpi.md)
   openmpi-bin libopenmpi-dev
   # Mode 2 and replays: offscreen GL (OSMesa; EGL through libglvnd, whose CMake target
   # OpenGL::EGL also needs libOpenGL.so from libopengl-dev), overlays, PNG

@@ -13,7 +13,7 @@
 namespace collidescope::api {
 
 /// Creates options.record and returns its recorder, which the pipeline reports to. The frames
-/// are open-ended, so the file's frame_end attribute is 0 (docs/recording.md). Throws
+/// are open-ended, so the file's frame_end attribute is 0 (docs/reference/recording.md). Throws
 /// InputError naming the file when it cannot be created.
 std::unique_ptr<recorder::Recorder> start_recording(const SessionOptions& options, const PipelineConfig& config,
                                                     std::vector<std::string> object_names, const Frame& first_frame);

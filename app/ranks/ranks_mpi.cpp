@@ -1,4 +1,4 @@
-// Frame-parallel runs under MPI (ranks.hpp, docs/mpi.md): Open MPI's C API, called from the
+// Frame-parallel runs under MPI (ranks.hpp, docs/how-to/mpi.md): Open MPI's C API, called from the
 // main thread only (the engine's worker threads never touch MPI).
 
 #include "ranks.hpp"

@@ -136,7 +136,7 @@ private:
     /// The threads' candidate lists, kept between frames as the engine keeps its own
     /// (TraversalBuffers): made afresh each frame, their growth touched new memory every
     /// frame, and the peer's collide time on data set C moved between 2.3 and 7 ms with what
-    /// else the process had allocated before (docs/experiments/2026-11-26-large-blocks.md).
+    /// else the process had allocated before (records/2026-11-26-large-blocks.md).
     tbb::enumerable_thread_specific<PairSet> m_local;
 };
 

@@ -9,7 +9,7 @@
 
 `Session`, `scene` and `scene_files` are the compiled core (`collidescope._core`, pybind11 on
 libcollidescope); `open` is pure Python on h5py and numpy, so the trace scripts need nothing
-built. docs/embedding.md is the reference.
+built. docs/reference/embedding.md is the reference.
 """
 from .recording import Recording, RecordingError, open  # noqa: F401  (open shadows the builtin here only)
 

@@ -1,9 +1,9 @@
-"""collidescope.open: a recording (docs/recording.md) read with h5py and numpy alone.
+"""collidescope.open: a recording (docs/reference/recording.md) read with h5py and numpy alone.
 
 Frames are named by their scene frame number, as in `check --pairs` (for a Session's recording,
 0, 1, 2, ... in step order); `rec.frames` lists them. Only complete frames count: a recording
 still being written, or killed, has every dataset up to its last flushed frame (the rule of
-docs/recording.md, "Frames complete"), and `refresh()` picks up frames written since.
+docs/reference/recording.md, "Frames complete"), and `refresh()` picks up frames written since.
 """
 import os
 
@@ -99,7 +99,7 @@ class Recording:
 
     @property
     def attrs(self):
-        """The root attributes (docs/recording.md), strings as str."""
+        """The root attributes (docs/reference/recording.md), strings as str."""
         return {name: attr_text(self._file, name) for name in self._file.attrs}
 
     @property
@@ -193,7 +193,7 @@ class Recording:
             raise RecordingError("%s: schema version %d is newer than this reader reads (%d)" % (self.path, major, MAJOR))
 
     def _counted_datasets(self):
-        """Every dataset whose length bounds the complete frames (docs/recording.md)."""
+        """Every dataset whose length bounds the complete frames (docs/reference/recording.md)."""
         f = self._file
         names = ["frames/index", "frames/method"] + (["frames/time"] if "frames/time" in f else [])
         for group in ("frames/ms", "frames/counts") + tuple("frames/" + g for g in METHOD_GROUPS):
@@ -296,7 +296,7 @@ def _resolve_source(path, name):
 
 
 def _check_virtual_sources(path, f):
-    """A virtual join (`join --virtual`, docs/mpi.md) reads its rows from part files; h5py reads
+    """A virtual join (`join --virtual`, docs/how-to/mpi.md) reads its rows from part files; h5py reads
     a missing part's rows as zeros without an error. Raises RecordingError, one line naming the
     part and the dataset, unless every part is there with the rows its mapping reads."""
     virtual = []

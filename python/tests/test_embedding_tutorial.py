@@ -1,4 +1,5 @@
-"""The README's Python loop (the block after <!-- embed-python-loop -->) runs as written."""
+"""The embedding tutorial's Python loop (docs/tutorials/embedding-loop.md, the block after
+<!-- embed-python-loop -->) runs as written."""
 import os
 import re
 import subprocess
@@ -9,10 +10,13 @@ import collidescope
 from conftest import SOURCE_DIR
 
 
-def test_the_readme_python_loop_runs(tmp_path):
-    with open(os.path.join(SOURCE_DIR, "README.md"), encoding="utf-8") as readme:
-        match = re.search(r"<!-- embed-python-loop -->\n```python\n(.*?)```", readme.read(), re.S)
-    assert match, "README.md: no ```python block after <!-- embed-python-loop -->"
+TUTORIAL = os.path.join("docs", "tutorials", "embedding-loop.md")
+
+
+def test_the_tutorial_python_loop_runs(tmp_path):
+    with open(os.path.join(SOURCE_DIR, TUTORIAL), encoding="utf-8") as tutorial:
+        match = re.search(r"<!-- embed-python-loop -->\n```python\n(.*?)```", tutorial.read(), re.S)
+    assert match, TUTORIAL + ": no ```python block after <!-- embed-python-loop -->"
     code = match.group(1)
     assert len(code.strip().splitlines()) <= 12
     package_root = os.path.dirname(os.path.dirname(os.path.abspath(collidescope.__file__)))

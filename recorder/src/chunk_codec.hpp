@@ -7,7 +7,7 @@
 // size on data sets A, C and E2), yet zlib spends most of its time searching them for
 // matches. Here each byte plane whose sampled entropy says it will not compress goes out as
 // deflate's stored blocks (a copy), the others at the requested level; the stream stays one
-// valid zlib stream (deflateParams switches between them). docs/recording.md has the figures.
+// valid zlib stream (deflateParams switches between them). docs/reference/recording.md has the figures.
 
 #include <cstddef>
 #include <span>

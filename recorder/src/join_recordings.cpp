@@ -109,7 +109,7 @@ hsize_t length_of(const Part& part, const std::string& path) {
 
 // Rows of every dataset that belong to complete frames. A finished part holds nothing else;
 // in a killed one the datasets may run past the last complete frame, and the rows that count
-// follow the offsets (docs/recording.md, "Frames complete").
+// follow the offsets (docs/reference/recording.md, "Frames complete").
 void plan_rows(Part& part, const std::vector<Node>& tree) {
     for (const Node& node : tree) {
         if (!node.group) part.rows[node.path] = {0, length_of(part, node.path), 0};

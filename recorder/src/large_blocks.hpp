@@ -6,7 +6,7 @@
 // blocks in the arenas: E4:large, 60 frames, peak RSS 1,138 MiB against 919 MiB with every
 // block of 1 MiB or more mapped. Doing that for the whole process (mallopt) made the engine's
 // own per-frame traversal buffers fault in fresh pages every frame: C, `record --method
-// aabb`, 0.8-1.0 s of system time against 0.2 s (docs/robustness.md, "Bounded memory").
+// aabb`, 0.8-1.0 s of system time against 0.2 s (docs/reference/robustness.md, "Bounded memory").
 
 #include <cstddef>
 #include <new>

@@ -1,4 +1,4 @@
-// The HDF5 side of the methods' own details (schema 1.1 and 1.2; docs/recording.md): the
+// The HDF5 side of the methods' own details (schema 1.1 and 1.2; docs/reference/recording.md): the
 // /frames/<method> groups, the GPU cull's passes, survivors and depth images.
 
 #include "trace_file.hpp"

@@ -1,4 +1,4 @@
-// The HDF5 side of the recorder (layout: schema.hpp, docs/recording.md).
+// The HDF5 side of the recorder (layout: schema.hpp, docs/reference/recording.md).
 
 #include "trace_file.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// Virtual datasets (a virtual join, `join --virtual`, docs/mpi.md): where their rows live, and
+// Virtual datasets (a virtual join, `join --virtual`, docs/how-to/mpi.md): where their rows live, and
 // the check that every part file they map is there. HDF5 reads the rows of a missing or
 // unreadable source as the fill value (zeros) without an error, so every reader of ours lists
 // and checks the sources when it opens a recording, and the join refuses a virtual file as a

@@ -1,4 +1,4 @@
-// focus_path(): where `--camera focus` looks in each frame (docs/replay.md, "Camera").
+// focus_path(): where `--camera focus` looks in each frame (docs/how-to/replay.md, "Camera").
 
 #include "collidescope/replays/camera.hpp"
 

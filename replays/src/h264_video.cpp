@@ -40,7 +40,7 @@ public:
         av().av_dict_set(&options, "profile", "high", 0);
         // No lookahead and no B-frames: each frame leaves the encoder as it arrives, so the
         // replay does not wait for a buffered tail of frames at the end (the MP4 replay was 4%
-        // slower than the PNG one with it; docs/experiments/video-encoding.md).
+        // slower than the PNG one with it; records/video-encoding.md).
         av().av_dict_set(&options, "tune", "zerolatency", 0);
         const int status = av().avcodec_open2(m_encoder.get(), codec, &options);
         av().av_dict_free(&options);
@@ -83,7 +83,7 @@ private:
         encoder.color_primaries = AVCOL_PRI_SMPTE170M;
         encoder.color_trc = AVCOL_TRC_SMPTE170M;
         // One encoder thread: the render threads already fill the cores, and x264's own pool
-        // (frame threads, lookahead) only competed with them (docs/experiments/video-encoding.md).
+        // (frame threads, lookahead) only competed with them (records/video-encoding.md).
         encoder.thread_count = 1;
     }
 

@@ -2,7 +2,7 @@
 // Video out (replays/src, private): the replayed frames as one clip, through FFmpeg's libraries
 // (libavcodec, libavformat, libswscale; libavfilter for the GIF palette), never a subprocess.
 // The file's extension picks the backend: .mp4 is H.264 (h264_video.cpp), .gif an animated
-// GIF (gif_video.cpp). docs/replay.md, "Video".
+// GIF (gif_video.cpp). docs/how-to/replay.md, "Video".
 //
 // Frames go in in order. The clip is written under a temporary name beside the target and
 // renamed onto it by finish(), so a failed or interrupted replay leaves no half-written file.
@@ -24,7 +24,7 @@ struct VideoSettings {
     int height = 0;
     double fps = 30;             ///< frames per second of the clip (> 0)
     /// x264's speed/size trade-off (its --preset) for .mp4; bench/bench_video_encode.cpp and
-    /// docs/experiments/video-encoding.md compare them.
+    /// records/video-encoding.md compare them.
     std::string h264_preset = "veryfast";
 };
 

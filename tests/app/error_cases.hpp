@@ -3,7 +3,7 @@
 // runs `collidescope`, and expects its exit code and exactly one stderr line, the error, that
 // names every given word (the file and the element: frame, object, vertex or face index, byte
 // offset, line, dataset). With COLLIDESCOPE_ERROR_TABLE=FILE set, each case appends its row
-// (class, command, the message as printed, exit code) to FILE as Markdown: docs/robustness.md
+// (class, command, the message as printed, exit code) to FILE as Markdown: docs/reference/robustness.md
 // holds that table, copied from a real run.
 
 #include "support/cli_runner.hpp"

@@ -4,7 +4,7 @@
 // the AddressSanitizer build (scripts/sanitize.sh address): they still check memory errors, but
 // Open MPI's components are dlopen'ed and closed again by MPI_Finalize, so the memory they keep
 // is reported with stacks that end in "<unknown module>", which no suppression can name
-// (docs/sanitizers.md); the serial tests check the same code for leaks. Under CI=true a build
+// (docs/how-to/sanitizers.md); the serial tests check the same code for leaks. Under CI=true a build
 // without Open MPI, or no mpirun, fails the tests instead of skipping them.
 
 #include "support/ci.hpp"

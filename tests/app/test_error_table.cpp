@@ -1,6 +1,6 @@
 // Every class of bad input a user's files can hold, through `collidescope check` (and record):
 // exit 2 and one line naming the file and the element, saying what was expected
-// (tests/app/error_cases.hpp; docs/robustness.md holds the table these cases print).
+// (tests/app/error_cases.hpp; docs/reference/robustness.md holds the table these cases print).
 
 #include "app/error_cases.hpp"
 #include "mesh/temp_files.hpp"

@@ -1,4 +1,4 @@
-// Under mpirun (app/ranks.hpp, docs/mpi.md), beyond the blocks of test_mpi_ranks.cpp: `replay`
+// Under mpirun (app/ranks.hpp, docs/how-to/mpi.md), beyond the blocks of test_mpi_ranks.cpp: `replay`
 // on 2 and 3 ranks writes the serial replay's PNGs, contact sheet and clip byte for byte;
 // `check` prints one total line for the run, in the serial line's form; Ctrl-C (SIGINT
 // to mpirun) stops every rank of a `record` after its current frame, with the documented line
@@ -134,7 +134,7 @@ TEST(MpiCheck, RankZeroPrintsOneTotalLineInTheSerialForm) {
 
 // Runs `command` (mpirun_command without a time limit: the shell execs mpirun), sends mpirun
 // SIGINT once `ready()` holds, as Ctrl-C at a terminal does (the ranks are in process groups of
-// their own; Open MPI 4.1 passes it on to them as SIGTERM, docs/mpi.md), and returns mpirun's
+// their own; Open MPI 4.1 passes it on to them as SIGTERM, docs/how-to/mpi.md), and returns mpirun's
 // wait status. Fails the test when the run ended before `ready()` or still ran after 240 s.
 int sigint_to_mpirun_when(const std::string& command, const std::function<bool()>& ready) {
     const pid_t mpirun = testing_mpi::spawn_shell(command);

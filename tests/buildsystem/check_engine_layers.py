@@ -1,8 +1,8 @@
 #!/usr/bin/python3
-"""The engine's layers, as docs/architecture.md draws them, hold in engine/src.
+"""The engine's layers, as docs/explanation/architecture.md draws them, hold in engine/src.
 
 The diagram between the markers `<!-- engine-layers -->` and `<!-- /engine-layers -->` in
-docs/architecture.md lists the folders of engine/src, one layer per line, top layer first.
+docs/explanation/architecture.md lists the folders of engine/src, one layer per line, top layer first.
 This check fails when
   - a folder of engine/src is in no layer, or the diagram names a folder that does not exist;
   - a file includes a folder of a higher layer (`#include "methods/..."` from bvh/, say);
@@ -44,21 +44,21 @@ def read_layers(architecture: pathlib.Path) -> list[list[str]]:
 def main() -> int:
     source = pathlib.Path(sys.argv[1])
     src = source / "engine" / "src"
-    layers = read_layers(source / "docs" / "architecture.md")
+    layers = read_layers(source / "docs" / "explanation" / "architecture.md")
     rank = {}  # folder -> layer number, 0 = bottom
     for number, folders in enumerate(reversed(layers)):
         for folder in folders:
             if folder in rank:
-                print(f"docs/architecture.md: engine/src/{folder}/ is in two layers")
+                print(f"docs/explanation/architecture.md: engine/src/{folder}/ is in two layers")
                 return 1
             rank[folder] = number
     problems = []
     on_disk = sorted(p.name for p in src.iterdir() if p.is_dir())
     for folder in on_disk:
         if folder not in rank:
-            problems.append(f"engine/src/{folder}/ is in no layer of docs/architecture.md's diagram")
+            problems.append(f"engine/src/{folder}/ is in no layer of docs/explanation/architecture.md's diagram")
     for folder in sorted(set(rank) - set(on_disk)):
-        problems.append(f"docs/architecture.md's diagram names engine/src/{folder}/, which does not exist")
+        problems.append(f"docs/explanation/architecture.md's diagram names engine/src/{folder}/, which does not exist")
 
     files = sorted(p for p in src.rglob("*") if p.suffix in (".cpp", ".hpp"))
     for path in files:

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Mesa's OSMesa (with LLVM) and FFmpeg's libraries are opened on first use, never linked
-# (docs/architecture.md, "Libraries loaded on first use"): a command that renders and encodes
+# (docs/explanation/architecture.md, "Libraries loaded on first use"): a command that renders and encodes
 # nothing starts without them. Usage: check_lazy_libraries.sh EXECUTABLE_OR_LIBRARY...
 set -euo pipefail
 status=0

@@ -1,7 +1,7 @@
 // The background rebuild (thesis contribution 3): frames stay exact while a worker rebuilds,
 // trees are swapped in and refit, and the method's counts are thread-independent when the
 // swap point is deterministic. The Background* tests are a ThreadSanitizer target
-// (docs/sanitizers.md).
+// (docs/how-to/sanitizers.md).
 
 #include "bvh/bvh_helpers.hpp"
 
@@ -125,7 +125,7 @@ TEST(BackgroundRebuild, DestroyedWhileAWorkerRuns) {
     EXPECT_FALSE(background.busy());
 }
 
-// The ThreadSanitizer target (docs/sanitizers.md): the engine thread hands snapshots to the
+// The ThreadSanitizer target (docs/how-to/sanitizers.md): the engine thread hands snapshots to the
 // rebuild worker (std::future) while TBB runs each thread's loops. With one TBB thread the
 // only hand-off is ours; with two, TBB's workers run the refits, traversals and the worker's
 // builds too, which the TSan build makes visible through its TBB bridge (tests/sanitize/).

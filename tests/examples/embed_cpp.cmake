@@ -1,10 +1,11 @@
 # ctest's consumer test of the installed C++ package (issue 24), run as `cmake -P`:
 #   1. `cmake --install BUILD --prefix TMP/prefix` (a temporary directory, not the build tree);
 #   2. configure and build examples/embed_cpp against it (find_package(collidescope)), with the
-#      README's C++ loop (the block after <!-- embed-cpp-loop -->) as a second program;
+#      embedding tutorial's C++ loop (docs/tutorials/embedding-loop.md, the block after
+#      <!-- embed-cpp-loop -->) as a second program;
 #   3. run the example on SCENE, recording; its pairs must equal `collidescope check --pairs`
 #      byte for byte, and `collidescope validate` must accept its recording;
-#   4. run the README's loop, which must print a line per frame;
+#   4. run the tutorial's loop, which must print a line per frame;
 #   5. with PYTHON and PYTHON_DIR (the module is built): import the installed module from
 #      PREFIX/PYTHON_DIR and step a frame, so the install's layout and RPATH are held too.
 # Variables: BUILD_DIR, SOURCE_DIR, CLI (the collidescope binary), SCENE; PYTHON, PYTHON_DIR.
@@ -32,17 +33,18 @@ if(NOT EXISTS ${tmp}/prefix/include/collidescope/session.hpp)
   message(FATAL_ERROR "install: no include/collidescope/session.hpp under ${tmp}/prefix")
 endif()
 
-# The README's loop, verbatim.
-file(READ ${SOURCE_DIR}/README.md readme)
-string(REGEX MATCH "<!-- embed-cpp-loop -->\n```cpp\n([^`]*)```" block "${readme}")
+# The tutorial's loop, verbatim.
+set(tutorial docs/tutorials/embedding-loop.md)
+file(READ ${SOURCE_DIR}/${tutorial} tutorial_text)
+string(REGEX MATCH "<!-- embed-cpp-loop -->\n```cpp\n([^`]*)```" block "${tutorial_text}")
 if(NOT CMAKE_MATCH_1)
-  message(FATAL_ERROR "README.md: no ```cpp block after <!-- embed-cpp-loop -->")
+  message(FATAL_ERROR "${tutorial}: no ```cpp block after <!-- embed-cpp-loop -->")
 endif()
-file(WRITE ${tmp}/readme_loop.cpp "${CMAKE_MATCH_1}")
+file(WRITE ${tmp}/tutorial_loop.cpp "${CMAKE_MATCH_1}")
 
 # CMAKE_PREFIX_PATH names the installed tree only; the build tree registers no package.
 run_step("configure" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/embed_cpp -B ${tmp}/build
-         -DCMAKE_PREFIX_PATH=${tmp}/prefix -DCMAKE_BUILD_TYPE=Release -DREADME_LOOP=${tmp}/readme_loop.cpp
+         -DCMAKE_PREFIX_PATH=${tmp}/prefix -DCMAKE_BUILD_TYPE=Release -DTUTORIAL_LOOP=${tmp}/tutorial_loop.cpp
          -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
 file(STRINGS ${tmp}/build/CMakeCache.txt found REGEX "^collidescope_DIR:")
 if(NOT found MATCHES "${tmp}/prefix")
@@ -62,9 +64,9 @@ if(differ)
 endif()
 run_step("validate" ${CLI} validate ${tmp}/embed.h5)
 
-run_step("readme_loop" ${tmp}/build/readme_loop)
+run_step("tutorial_loop" ${tmp}/build/tutorial_loop)
 if(NOT last_output MATCHES "frame 15: ")
-  message(FATAL_ERROR "the README's loop did not print frame 15:\n${last_output}")
+  message(FATAL_ERROR "the tutorial's loop did not print frame 15:\n${last_output}")
 endif()
 
 set(python_note "")
@@ -84,4 +86,4 @@ if(PYTHON)
 endif()
 
 file(REMOVE_RECURSE ${tmp})
-message(STATUS "embed_cpp: ${check_size} bytes of pairs equal check's; the README's loop ran${python_note}")
+message(STATUS "embed_cpp: ${check_size} bytes of pairs equal check's; the tutorial's loop ran${python_note}")

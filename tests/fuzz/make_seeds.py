@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Writes the fuzz targets' seed inputs (docs/fuzzing.md): small valid files of every form each
+"""Writes the fuzz targets' seed inputs (docs/how-to/fuzzing.md): small valid files of every form each
 reader accepts. The committed corpus (tests/fuzz/corpus/) grew from these seeds and was
 minimised with `scripts/fuzz.sh merge`; this script says where it started.
 

@@ -1,4 +1,4 @@
-// The fuzz targets' inputs, replayed by the gcc suite (docs/fuzzing.md): every file of the
+// The fuzz targets' inputs, replayed by the gcc suite (docs/how-to/fuzzing.md): every file of the
 // committed corpus through its target's entry (no exception but InputError may escape), and
 // every past finding (tests/fuzz/regressions/<target>/) with the answer it must get now.
 

@@ -11,7 +11,7 @@ textures and buffers included: a user may pass any file.
 
 --shard I/N takes every N-th file from the I-th (sorted paths), so a corpus splits into
 ctest entries that run in parallel. --summary prints each file's outcome (TSV) and counts
-of the refusals by their reason, the data behind docs/robustness.md.
+of the refusals by their reason, the data behind docs/reference/robustness.md.
 
 Which files load is pinned: corpus_loads.txt beside this script lists them (relative paths,
 sorted). A listed file that is refused, an unlisted one that loads, or a listed one missing from
@@ -40,7 +40,7 @@ PIN_HEADER = """\
 # The files of Debian 12's assimp-testmodels (5.2.5) that `collidescope check` loads, relative to
 # /usr/share/assimp/models, sorted; the others are refused with one line. check_model_corpus.py fails
 # a sweep where a listed file is refused or an unlisted one loads: after a change that should alter
-# this, regenerate it with --write-pin (docs/robustness.md) and say why in the commit.
+# this, regenerate it with --write-pin (docs/reference/robustness.md) and say why in the commit.
 """
 
 

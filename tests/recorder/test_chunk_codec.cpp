@@ -123,7 +123,7 @@ TEST(ChunkCodec, SampledEntropy) {
 // HDF5's shuffle and deflate filters bit for bit, and is at most 5% larger than the chunk
 // HDF5 itself writes at the same level (2.4% on this synthetic sheet, whose third byte plane
 // deflate's matches shrink a little; on data sets A, C and E2 the encoder's chunks are 0-1%
-// smaller, docs/recording.md).
+// smaller, docs/reference/recording.md).
 TEST(ChunkCodec, HdfFiltersReadWhatTheEncoderWrote) {
     TempDir dir;
     const std::string file = (dir.path() / "codec.h5").string();

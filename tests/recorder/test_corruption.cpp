@@ -41,7 +41,7 @@ TEST(RecorderCorruption, RandomBytesNeverCrashTheReader) {
     constexpr unsigned k_seed = 6150;
     // Each trial starts `collidescope validate`, 0.1 s here and about three times that under
     // AddressSanitizer: a sanitizer build runs the first 300 trials of the same sequence, which
-    // keeps the CI run's sanitizer phase within its time (docs/sanitizers.md).
+    // keeps the CI run's sanitizer phase within its time (docs/how-to/sanitizers.md).
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
     constexpr int k_trials = 300;
 #else

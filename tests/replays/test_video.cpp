@@ -206,7 +206,7 @@ TEST(VideoInterrupt, SigintStopsBetweenFramesAndRemovesTheUnfinishedClip) {
     if (!HasFailure()) std::filesystem::remove_all(out);
 }
 
-// Without --video too (mpirun's Ctrl-C reaches the ranks as SIGTERM, docs/mpi.md): the replay
+// Without --video too (mpirun's Ctrl-C reaches the ranks as SIGTERM, docs/how-to/mpi.md): the replay
 // stops between frames, every PNG written is whole, and it says how many it rendered.
 TEST(ReplayInterrupt, SigtermStopsBetweenFramesAndEveryPngIsComplete) {
     const std::filesystem::path out = testing::test_dir("replay_sigterm_" + std::to_string(::getpid()));

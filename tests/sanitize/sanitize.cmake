@@ -1,5 +1,5 @@
 # Included by the top-level CMakeLists.txt after every target exists, when COLLIDESCOPE_SANITIZE
-# is set (docs/sanitizers.md). Gives every executable (the app, the tests, the benchmarks) the
+# is set (docs/how-to/sanitizers.md). Gives every executable (the app, the tests, the benchmarks) the
 # sanitizer's built-in options and suppressions, so `ctest` and the app need no environment,
 # and in the thread build links the TBB bridge first (tbb_tsan_bridge.cpp).
 

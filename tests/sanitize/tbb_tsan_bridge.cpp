@@ -1,4 +1,4 @@
-// Makes TBB's synchronisation visible to ThreadSanitizer (docs/sanitizers.md). Linked first
+// Makes TBB's synchronisation visible to ThreadSanitizer (docs/how-to/sanitizers.md). Linked first
 // into every executable of the thread-sanitizer build (COLLIDESCOPE_SANITIZE=thread).
 //
 // Debian's libtbb is not built with -fsanitize=thread, so TSan cannot see how TBB hands a task

@@ -1,6 +1,6 @@
 // Built-in options and suppressions of the thread-sanitizer build, compiled into every
 // executable (tests/sanitize/sanitize.cmake), so that ctest and the app need no environment.
-// TSAN_OPTIONS given at run time still adds to or overrides them. docs/sanitizers.md explains
+// TSAN_OPTIONS given at run time still adds to or overrides them. docs/how-to/sanitizers.md explains
 // each suppression (Mesa's llvmpipe, and libtbb's own libc calls); TBB's synchronisation
 // needs none (the bridge, tbb_tsan_bridge.cpp, makes it visible), and none names our own code.
 
@@ -22,7 +22,7 @@ __attribute__((visibility("default"))) const char* __tsan_default_suppressions()
         "called_from_lib:libOSMesa.so\n"
         // The EGL backend (--gl egl) runs the same llvmpipe from Mesa's DRI driver
         // (swrast_dri.so and its hard links, dlopened by libEGL_mesa): same reason. Added with
-        // the EGL backend by analogy; no TSan run has exercised it yet (docs/sanitizers.md).
+        // the EGL backend by analogy; no TSan run has exercised it yet (docs/how-to/sanitizers.md).
         "called_from_lib:_dri.so\n"
         // LLVM, which llvmpipe uses to compile its shaders, is uninstrumented too, and its
         // object loader holds more than 64 mutexes at once: TSan's deadlock detector stops the

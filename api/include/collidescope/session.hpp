@@ -12,8 +12,8 @@
 ///     }
 ///
 /// Pairs are exactly those `collidescope check --pairs` reports for the same frames; with
-/// `record`, the session writes the HDF5 file `collidescope record` writes (docs/recording.md),
-/// which `replay`, `inspect` and collidescope.open read. docs/embedding.md is the reference.
+/// `record`, the session writes the HDF5 file `collidescope record` writes (docs/reference/recording.md),
+/// which `replay`, `inspect` and collidescope.open read. docs/reference/embedding.md is the reference.
 /// Not thread-safe: one thread drives a session; the engine parallelises inside step(). A
 /// moved-from session may only be destroyed or assigned to.
 

@@ -26,7 +26,7 @@ enum class AabbRebuildRule : std::uint8_t {
 enum class AabbBackground : std::uint8_t {
     /// On a worker only when the frames' worker threads leave a hardware thread free for it
     /// (--threads below the machine's); else inside the frame. On 2 cores with both busy, a
-    /// frame traversing while the worker builds took 2-3x its time (docs/decision.md).
+    /// frame traversing while the worker builds took 2-3x its time (docs/explanation/decision.md).
     Auto,
     On,   ///< on a worker thread while frames use the refit tree (thesis contribution 3)
     Off,  ///< inside the frame, on the engine thread and its workers

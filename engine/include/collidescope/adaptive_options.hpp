@@ -1,5 +1,5 @@
 #pragma once
-/// Options of the decision system (method `adaptive`; thesis 4.4; docs/decision.md).
+/// Options of the decision system (method `adaptive`; thesis 4.4; docs/explanation/decision.md).
 
 #include "collidescope/option_names.hpp"
 

@@ -4,7 +4,7 @@
 /// A scene is named `NAME[:PRESET]`; the preset picks a size. The thesis's data sets (chapter 5)
 /// are `A` (two bunnies), `B` (waving cloths), `C` (sine-wave sheets), `D` (BART-like soup that
 /// assembles), `E1`-`E4` (exploding dragons, fastest to slowest), each with the presets
-/// `default`, `small` and `large` (docs/datasets.md has their sizes); `demo` is a small
+/// `default`, `small` and `large` (docs/reference/datasets.md has their sizes); `demo` is a small
 /// torus-and-sheet scene. The cloth family (`cloth-rest`, `cloth-drape`, `cloth-crumple`,
 /// `cloth-slide`, the same three presets, self-collision on) stresses self-contact and exactly
 /// coplanar contact. Longer aliases (`bunnies`, `cloths`, `sine-sheets`, `bart`,

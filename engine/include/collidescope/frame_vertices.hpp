@@ -2,7 +2,7 @@
 /// One object's vertex positions in one frame (ObjectFrame::vertices): either owned, as the
 /// readers, point caches, generators and animated models produce them, or a view of memory
 /// the caller owns, so the embedding facade hands packed doubles to the engine with no copy
-/// (Session::step, docs/embedding.md).
+/// (Session::step, docs/reference/embedding.md).
 ///
 /// A view is valid only while the caller's memory is. The engine reads a frame's vertices only
 /// inside Pipeline::process (and the sinks' on_frame, called from it); whatever keeps positions

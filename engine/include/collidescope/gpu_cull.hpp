@@ -1,6 +1,6 @@
 #pragma once
 /// Options and per-frame trace of Mode 2, the GPU image-space cull (engine/src/gpucull;
-/// thesis 3.2, 4.2; docs/gpu_cull.md).
+/// thesis 3.2, 4.2; docs/explanation/gpu_cull.md).
 
 #include "collidescope/gl_backend.hpp"
 #include "collidescope/option_names.hpp"
@@ -25,7 +25,7 @@ inline constexpr OptionNames<GpuCullVariant, 2> k_gpu_cull_variant_names{
 /// Options of the GPU cull. The thesis's three mechanisms (4.2) are each switchable.
 struct GpuCullConfig {
     /// Width and height of each view's depth buffer, pixels. 256 under llvmpipe: on C:small,
-    /// 512 halves the PCS left again but costs 1.7x the time (docs/gpu_cull.md).
+    /// 512 halves the PCS left again but costs 1.7x the time (docs/explanation/gpu_cull.md).
     int resolution = 256;
     /// View axes in the order used (0 = x, 1 = y, 2 = z); with `view_matrix` only their number
     /// counts (the matrix picks the axes).
@@ -110,7 +110,7 @@ struct GpuFrameInfo {
 };
 
 /// Calls `visit(name, value, unit)` for every per-frame scalar of the GPU cull's trace, in a
-/// fixed order (the recorder stores one dataset per name; docs/recording.md lists them).
+/// fixed order (the recorder stores one dataset per name; docs/reference/recording.md lists them).
 template <class Visitor>
 void for_each_gpu_value(const GpuFrameInfo& info, Visitor&& visit) {
     visit("pcs_objects_in", double(info.pcs_objects_in), "1");

@@ -1,7 +1,7 @@
 #pragma once
 /// Point caches: one mesh's vertex positions over many frames (engine/src/mesh).
 ///
-/// Two formats, chosen by extension (docs/point-caches.md):
+/// Two formats, chosen by extension (docs/how-to/point-caches.md):
 /// - PC2 (`.pc2`, POINTCACHE2, written by 3ds Max and Blender): a little-endian 32-byte header
 ///   "POINTCACHE2\0", int32 version (1), int32 point count, float32 start frame, float32
 ///   sample rate (frames between samples), int32 sample count; then float32 x y z per point

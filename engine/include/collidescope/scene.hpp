@@ -93,7 +93,7 @@ std::shared_ptr<FrameSource> make_memory_source(std::vector<std::string> object_
                                                 std::vector<std::vector<MeshData>> frames);
 
 /// How animated model files (glTF, FBX, Collada, .X, ... through assimp) are sampled
-/// (docs/animation.md). Unset members take a manifest's top-level "fps" / "clip", else the
+/// (docs/reference/animation.md). Unset members take a manifest's top-level "fps" / "clip", else the
 /// defaults: 30 frames per second, the first clip.
 struct AnimationOptions {
     std::optional<double> fps;         ///< frames per second; frame k is the pose at k / fps s
@@ -108,7 +108,7 @@ struct AnimationOptions {
 /// malformed manifest). A model file with animation (anything assimp reads but .ply / .obj)
 /// becomes one object per mesh instance, named "<node>/<mesh>", sampled per `animation`; its
 /// frames are 0 .. floor(duration * fps), and it fills the scene's frame_times, fps, clip and
-/// up_axis (docs/animation.md).
+/// up_axis (docs/reference/animation.md).
 Scene open_inputs(std::span<const std::string> inputs, const AnimationOptions& animation = {});
 
 }  // namespace collidescope

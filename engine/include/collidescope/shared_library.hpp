@@ -4,7 +4,7 @@
 /// inspect) never loads Mesa's OSMesa, with LLVM, nor FFmpeg with its codecs: together 165 of
 /// the 200 ms that each start of `collidescope` took on the project's VM (about 170 libraries
 /// of 200), and 275 ms under AddressSanitizer, where the test suite starts it thousands of
-/// times (docs/architecture.md, "Libraries loaded on first use").
+/// times (docs/explanation/architecture.md, "Libraries loaded on first use").
 
 #include <string>
 

@@ -49,11 +49,11 @@ struct FrameCounts {
     /// object it converted (float32, strided); 0 for scenes read or generated.
     std::uint64_t positions_copied_bytes = 0;
     /// Triangles of self-collision objects whose own pairs the method proved apart without
-    /// testing them (one-way normals and a simple contour, docs/algorithms.md; Mode 1 trees).
+    /// testing them (one-way normals and a simple contour, docs/explanation/algorithms.md; Mode 1 trees).
     std::uint64_t self_culled_triangles = 0;
     /// Box-overlapping pairs of one self-collision object that share a vertex index and that
     /// the traversal proved apart from their topology and one or two certified orient3d signs
-    /// (docs/algorithms.md, "Adjacent pairs"): never candidates, so never exact tests (Mode 1
+    /// (docs/explanation/algorithms.md, "Adjacent pairs"): never candidates, so never exact tests (Mode 1
     /// trees and the GPU methods' final hierarchy).
     std::uint64_t adjacent_apart = 0;
 };

@@ -135,7 +135,7 @@ BuildStats build_into(std::span<const TriIndices> triangles, std::span<const Vec
         // A fresh tree, keeping only the wide layout and the counters that key it. Writing
         // into the old tree's storage instead was slower wherever freed memory is kept
         // (keep_freed_memory, as the command and the peer bench run): data set D's rebuilds
-        // 3.6-3.8 against 2.4-2.6 ms a frame (docs/experiments/2026-11-26-wide-traversal.md).
+        // 3.6-3.8 against 2.4-2.6 ms a frame (records/2026-11-26-wide-traversal.md).
         WideTree wide = std::move(tree.wide);
         const std::uint64_t builds = tree.builds, fits = tree.fits;
         tree = Tree{};

@@ -205,7 +205,7 @@ struct BuildScratch;
 /// keeps the builds' working memory (per-triangle centroids, Morton keys and their sort
 /// buffer, the raw nodes) for the next build instead of freeing it. Memory touched for the first time was most of a
 /// build's time on the CI VM (a 22,598-triangle build: 11.3 ms with 668 first-touch page
-/// faults, 1.8 ms warm; docs/experiments/2026-11-26-wide-traversal.md). Thread-safe: builds
+/// faults, 1.8 ms warm; records/2026-11-26-wide-traversal.md). Thread-safe: builds
 /// running at once each take their own working memory.
 class TreeBuilder {
 public:

@@ -54,7 +54,7 @@ public:
     /// a second frame in a row, or whose layout refit kept fitted, in parallel. A contact of
     /// one frame does not pay for a layout: its first fit touches fresh memory, which cost
     /// more than the wide traversal saved on short contacts (spread frames of data sets A, B
-    /// and D; docs/experiments/2026-11-26-wide-traversal.md).
+    /// and D; records/2026-11-26-wide-traversal.md).
     void fit_wide(std::span<const std::uint32_t> paired);
     /// Hands every `objects` tree without a rebuild in flight to the worker (reason: the
     /// decision system's, recorded as k_rebuild_thesis). False when a batch is already in flight.

@@ -4,7 +4,7 @@
 // pass each block counts its digits, the offsets run digit by digit and block by block, and
 // each block scatters its keys in order, so the result is the sequential one (and stable).
 // Replaced tbb::parallel_sort (a comparison sort), which was 38% of an LBVH build of the
-// 48k-triangle dragon (docs/algorithms.md, "Builds").
+// 48k-triangle dragon (docs/explanation/algorithms.md, "Builds").
 
 #include "bvh/radix_sort.hpp"
 

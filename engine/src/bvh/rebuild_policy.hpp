@@ -45,7 +45,7 @@ struct RebuildPolicyConfig {
     /// way), times payback_frames, reaches rebuild_ms. Past in_frame_quality the tree is
     /// rebuilt whatever the times. 0: the SAH cost alone decides. Without it a 437k-triangle
     /// cloth (cloth-drape:large, 2 threads) spent 110-160 ms rebuilding in one frame to save
-    /// under a millisecond a frame (docs/experiments/2026-11-26-large-blocks.md).
+    /// under a millisecond a frame (records/2026-11-26-large-blocks.md).
     double payback_frames = 16;
     /// A chosen rebuild runs in the frame, even where rebuilds go to the background worker,
     /// when the refit tree's SAH cost is past this multiple of its post-build cost: the frame

@@ -114,7 +114,7 @@ constexpr std::uint32_t kPrefetchSlots = 16;
 // a node is a leaf: the triangle slots in order, storing each leaf's box at its last slot
 // (flagged in the plan); then the inner nodes backwards, children before parents. The single
 // backward walk it replaces branched on leaf or inner node per node, unpredictably, and
-// called out and reloaded each box for its cost (docs/algorithms.md, "Refit").
+// called out and reloaded each box for its cost (docs/explanation/algorithms.md, "Refit").
 // Exact: min and max only, so a box is the same whatever the order.
 // kSides: also each leaf's patch sides (the triangles' common projected orientations).
 template <bool kSides>

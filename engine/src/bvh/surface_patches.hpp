@@ -2,7 +2,7 @@
 // Self-collision culling for surfaces (engine/src/bvh): a node of an object's tree whose
 // triangles are proven embedded in space has no colliding pair under the self rule, so the
 // self-traversal skips its whole subtree (Volino and Magnenat-Thalmann 1994: the normal-cone
-// test with its contour condition, made exact; docs/algorithms.md, "Self-collision culling").
+// test with its contour condition, made exact; docs/explanation/algorithms.md, "Self-collision culling").
 //
 // A node's triangles P are proven embedded when, for some axis k:
 //  1. every triangle of P projects with one strict orientation onto the plane dropping k
@@ -12,7 +12,7 @@
 //  3. that loop projects to a simple polygon (geometry/simple_loop.hpp).
 // Then the projection is one-to-one on P: the number of triangles covering a point is the
 // winding number of the boundary loop around it, at most 1 for a simple polygon, and the
-// case analysis in docs/algorithms.md rules out contact on edges and corners. So no two
+// case analysis in docs/explanation/algorithms.md rules out contact on edges and corners. So no two
 // triangles of P meet outside their shared vertices' hull, and no two vertices coincide.
 
 #include "bvh/bvh.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Large arrays in transparent huge pages, kept for reuse (engine-private; docs/architecture.md,
+// Large arrays in transparent huge pages, kept for reuse (engine-private; docs/explanation/architecture.md,
 // "Memory between frames").
 //
 // A tree, its build's working memory and its wide layout are arrays of megabytes that a

@@ -122,7 +122,7 @@ Scene make_scene_E(int speed, std::string_view preset, std::uint64_t seed);
 
 /// The cloth family (cloth_family.cpp has what each scene shows): `name` is cloth-rest,
 /// cloth-drape, cloth-crumple or cloth-slide; self-collision on. Presets as above (sizes in
-/// docs/datasets.md; large >= 400k triangles). Throws InputError on a bad name or preset.
+/// docs/reference/datasets.md; large >= 400k triangles). Throws InputError on a bad name or preset.
 Scene make_cloth_scene(std::string_view name, std::string_view preset, std::uint64_t seed);
 
 }  // namespace collidescope::datasets

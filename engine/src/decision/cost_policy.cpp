@@ -1,4 +1,4 @@
-// Our policy (docs/decision.md): keep an estimate of each method's detection time, run the
+// Our policy (docs/explanation/decision.md): keep an estimate of each method's detection time, run the
 // cheapest, and re-measure the others within a budget.
 //
 // - Estimates: AABB and hybrid, exponential moving averages of their measured times; the GPU,

@@ -1,6 +1,6 @@
 #pragma once
 // The decision system's policies (engine/src/decision, private; thesis 4.4, Algorithms 4 and
-// 5; docs/decision.md). A policy is a pure function of what the adaptive method measured: it
+// 5; docs/explanation/decision.md). A policy is a pure function of what the adaptive method measured: it
 // sees the facts of a frame before it runs, says what to run, and then observes the measured
 // times. No clock, no GL, no threads in here: the random draws come from an injected source,
 // so tests walk a policy through every branch with scripted times and draws.

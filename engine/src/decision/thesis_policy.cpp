@@ -1,6 +1,6 @@
 // Algorithms 4 and 5 of the thesis (4.4) as a state machine over measured times.
 //
-// Readings of the extracted text (docs/decision.md):
+// Readings of the extracted text (docs/explanation/decision.md):
 // - Mode 1 checks (4) and (5) every frame against the last GPU_T; (7) and (8) are checked on
 //   every Mode 1 frame that AABB serves; (6) only after a rebuild in a thread finished.
 // - While the rebuild runs, GPU 1 serves the frames ("Rebuild In Thread() AND Perform GPU 1()").

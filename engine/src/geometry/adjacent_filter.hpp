@@ -5,7 +5,7 @@
 /// for a reason one or two orient3d signs certify. adjacent_apart gives that proof with
 /// the floating-point filter alone (inline, no predicate counters); what it cannot prove
 /// goes to the narrow phase's exact self rule as before. Exact either way: it answers true
-/// only when self_triangles_collide would answer false (docs/algorithms.md, "Adjacent pairs").
+/// only when self_triangles_collide would answer false (docs/explanation/algorithms.md, "Adjacent pairs").
 
 #include "collidescope/types.hpp"
 

@@ -3,7 +3,7 @@
 //
 // GCC 12.2's SLP vectorizer (-O2 and -O3) miscompiles that round trip when two of them fill
 // neighbouring doubles: it packs the unconverted inputs into one vector and drops both
-// conversions, so the values stay unrounded (docs/toolchain.md has the twelve-line
+// conversions, so the values stay unrounded (docs/how-to/toolchain.md has the twelve-line
 // reproducer; clang, -O1 and -fno-tree-slp-vectorize round correctly). An exact engine cannot
 // have values change behind its back, so this file is compiled with -fno-tree-slp-vectorize on
 // GCC < 13 (engine/CMakeLists.txt), and the functions stay out of line: a caller sees a call,

@@ -1,6 +1,6 @@
 // The self-collision rule (DESIGN.md): two triangles of one object that share vertex indices
 // collide iff their intersection holds a point outside the convex hull H of the shared
-// vertices. Derivations (docs/algorithms.md has them in full):
+// vertices. Derivations (docs/explanation/algorithms.md has them in full):
 //
 // Shared edge (u, v), u != v in space, T1 = (u, v, a), T2 = (u, v, b), H = [u, v]:
 //  - both degenerate: two intervals of line uv that contain [u, v]; they overlap beyond it

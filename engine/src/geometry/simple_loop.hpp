@@ -1,7 +1,7 @@
 #pragma once
 /// Is a closed polygon simple in a coordinate projection? The contour test of self-collision
 /// culling (bvh/surface_patches.hpp): a patch whose normals all point one way along an axis
-/// and whose boundary loop projects to a simple polygon is embedded (docs/algorithms.md).
+/// and whose boundary loop projects to a simple polygon is embedded (docs/explanation/algorithms.md).
 /// Exact: orient2d and coordinate comparisons only.
 
 #include "collidescope/types.hpp"

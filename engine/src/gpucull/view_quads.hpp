@@ -2,7 +2,7 @@
 // One axis-aligned orthographic view and the conservative record of each triangle in it
 // (engine/src/gpucull, private). Everything that makes the cull conservative is decided here,
 // on the CPU, in double precision with outward rounding; the GPU only evaluates the bounds
-// these records describe (shaders.cpp) and compares float depths exactly. docs/gpu_cull.md
+// these records describe (shaders.cpp) and compares float depths exactly. docs/explanation/gpu_cull.md
 // has the argument.
 
 #include "collidescope/scene.hpp"

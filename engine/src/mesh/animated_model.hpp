@@ -2,7 +2,7 @@
 // An animated model as read through assimp (engine/src/mesh, private): the node tree, one
 // entry per mesh instance (node and mesh) with its welded vertices, triangles, bone influences
 // and morph targets, and the clips. Plain data in double precision; the evaluation lives in
-// animation_clip (node channels), morph, skinning and model_pose. docs/animation.md.
+// animation_clip (node channels), morph, skinning and model_pose. docs/reference/animation.md.
 
 #include "collidescope/types.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 // One mesh instance's vertices in scene space for a Pose (engine/src/mesh, private):
 // morph targets first (in the mesh's space), then skinning (skinned meshes) or the instance
-// node's global transform (unskinned meshes). docs/animation.md.
+// node's global transform (unskinned meshes). docs/reference/animation.md.
 
 #include "mesh/animation_clip.hpp"
 

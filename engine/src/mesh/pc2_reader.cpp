@@ -6,7 +6,7 @@
 //
 // The sample rate is the number of the application's frames between two samples (1 samples
 // every frame); the application's frame rate is not stored, so times are read at
-// k_pc2_frame_rate frames per second (docs/point-caches.md).
+// k_pc2_frame_rate frames per second (docs/how-to/point-caches.md).
 
 #include "mesh/point_cache_format.hpp"
 

@@ -1,5 +1,5 @@
 // weld_instance: an animated model's mesh instance welded on the key (rest position, morph
-// target positions, normalised influences sorted by bone): docs/animation.md, Welding.
+// target positions, normalised influences sorted by bone): docs/reference/animation.md, Welding.
 
 #include "mesh/animated_model.hpp"
 #include "mesh/weld.hpp"

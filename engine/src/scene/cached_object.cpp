@@ -1,5 +1,5 @@
 // Mesh + point cache objects: `body.obj@body.pc2` on the command line, {"mesh", "cache"} in a
-// scene.json (docs/point-caches.md).
+// scene.json (docs/how-to/point-caches.md).
 
 #include "scene/cached_object.hpp"
 #include "scene/frame_pattern.hpp"

@@ -5,7 +5,7 @@
 // "self": bool}. Only "objects" and each object's "pattern" are required; "name" defaults to
 // the manifest's directory name (objects: the pattern's name), "self" to false. An object may
 // say "mesh" instead of "pattern", and with it "cache": a point cache (.pc2, .mdd) whose frames
-// move the mesh's vertices (docs/point-caches.md). Paths are relative to the manifest's
+// move the mesh's vertices (docs/how-to/point-caches.md). Paths are relative to the manifest's
 // directory. When "frames" is given the scene uses the first F frames of every sequence or
 // cache (a manifest may describe part of a longer cache); one with fewer than F frames is an
 // error. Without it, the frames found are used.

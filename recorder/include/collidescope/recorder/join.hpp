@@ -1,7 +1,7 @@
 #pragma once
 /// Joining recordings of contiguous frame ranges of one session (`record --frames A:B` on each
 /// node of a farm, or the part files of `mpirun ... record`) into one recording that reads
-/// exactly as a serial run's (`collidescope join`, docs/mpi.md).
+/// exactly as a serial run's (`collidescope join`, docs/how-to/mpi.md).
 ///
 /// The join is generic over the schema: every group, dataset and attribute of the parts is
 /// carried over, whatever this build knows of it. Datasets under /frames have one row per

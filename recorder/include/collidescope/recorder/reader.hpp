@@ -1,5 +1,5 @@
 #pragma once
-/// Reading a recording back (schema.hpp, docs/recording.md).
+/// Reading a recording back (schema.hpp, docs/reference/recording.md).
 ///
 /// Opening checks that the file is HDF5, is a collidescope recording and has a schema major
 /// version this reader knows, and counts the complete frames: the smallest length over every
@@ -42,7 +42,7 @@ struct Series {
     std::vector<T> values;  ///< one per complete frame
 };
 
-/// One mapping of a virtual dataset (a virtual join, `join --virtual`, docs/mpi.md): rows
+/// One mapping of a virtual dataset (a virtual join, `join --virtual`, docs/how-to/mpi.md): rows
 /// [first, first + rows) of `dataset` are rows [source_first, source_first + rows) of
 /// `source_dataset` in the part file `file`.
 struct VirtualSource {

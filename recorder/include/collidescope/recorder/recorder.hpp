@@ -1,6 +1,6 @@
 #pragma once
 /// The recorder: a TraceSink that writes one HDF5 file per session (schema.hpp,
-/// docs/recording.md).
+/// docs/reference/recording.md).
 ///
 /// on_frame runs on the engine's thread and only copies the frame into a bounded queue; a
 /// writer thread appends the frames waiting to the file and flushes, in SWMR mode, so a killed

@@ -1,6 +1,6 @@
 #pragma once
 /// The recording's HDF5 schema in one place: the version, every group and dataset name and
-/// every unit. docs/recording.md describes the same layout for h5py and h5dump users.
+/// every unit. docs/reference/recording.md describes the same layout for h5py and h5dump users.
 ///
 /// Per-frame datasets are 1-D (or rows of a flat array) and extensible along the frame axis;
 /// row r of every per-frame dataset is recorded frame r, whose scene frame number is

@@ -1,5 +1,5 @@
 #pragma once
-/// Options of the replayer (docs/replay.md): what a frame shows, the camera, the image size.
+/// Options of the replayer (docs/how-to/replay.md): what a frame shows, the camera, the image size.
 
 #include "collidescope/gl_backend.hpp"
 #include "collidescope/option_names.hpp"
@@ -71,7 +71,7 @@ inline constexpr OptionNames<SheetSelection, 3> k_sheet_selection_names{
 /// Options of one replay.
 struct ReplayOptions {
     std::filesystem::path output_dir;  ///< PNGs go here (created when missing); "" = no PNGs (--video alone)
-    /// The frames as a clip too (docs/replay.md, "Video"): .mp4 (H.264) or .gif; "" = none. At
+    /// The frames as a clip too (docs/how-to/replay.md, "Video"): .mp4 (H.264) or .gif; "" = none. At
     /// the recording's fps, or 30 when it does not say.
     std::filesystem::path video;
     /// Scene frames to replay, half-open [frame_begin, frame_end); rows whose /frames/index lies

@@ -1,7 +1,7 @@
 #pragma once
-/// The replayer: a recording (recorder/, docs/recording.md) -> one annotated PNG per frame,
+/// The replayer: a recording (recorder/, docs/reference/recording.md) -> one annotated PNG per frame,
 /// rendered offscreen through the engine's GL context interface (OSMesa), several frames at
-/// once in several threads, each with its own context. docs/replay.md says what a frame shows.
+/// once in several threads, each with its own context. docs/how-to/replay.md says what a frame shows.
 
 #include "collidescope/replays/options.hpp"
 
