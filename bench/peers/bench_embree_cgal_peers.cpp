@@ -1,6 +1,7 @@
 // The peer users would assemble for cloth-like scenes (issue 23, item 4): Embree 3 (refit
 // BVH, rtcCollide of each object with itself and with the others) for the broad phase, then
-// CGAL's filtered exact predicates, sequentially, with DESIGN.md's self rule
+// CGAL's filtered exact predicates, on TBB's threads as the engine's narrow phase (until
+// 2026-11-27: sequentially), with DESIGN.md's self rule
 // (peers/cgal_narrow_phase.hpp); beside the `aabb` method at several thread counts and FCL
 // (objects only: FCL has no self-collision). One scene per run, on chosen frames; every
 // method sees the same frames in the same order, after one warm-up frame (the first chosen

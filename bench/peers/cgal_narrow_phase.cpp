@@ -16,6 +16,10 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <variant>
 
@@ -151,9 +155,18 @@ bool cgal_pair_collides(const Frame& frame, const TrianglePair& pair) {
 }
 
 PairSet cgal_narrow_phase(const Frame& frame, std::span<const TrianglePair> candidates) {
+    // CGAL's Epick predicates are thread-safe (their interval filters set the rounding mode of
+    // the calling thread only), so the candidates split over TBB's threads as the engine's
+    // narrow phase does (common/narrow_phase.cpp), each thread keeping what it found.
+    tbb::enumerable_thread_specific<PairSet> found;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 512),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                          PairSet& local = found.local();
+                          for (std::size_t i = range.begin(); i != range.end(); ++i)
+                              if (cgal_pair_collides(frame, candidates[i])) local.push_back(candidates[i]);
+                      });
     PairSet colliding;
-    for (const TrianglePair& pair : candidates)
-        if (cgal_pair_collides(frame, pair)) colliding.push_back(pair);
+    for (const PairSet& local : found) colliding.insert(colliding.end(), local.begin(), local.end());
     return colliding;
 }
 

@@ -18,8 +18,8 @@ namespace collidescope::peers {
 /// Whether the candidate `pair` of `frame` collides (self rule when pair.obj_a == pair.obj_b).
 bool cgal_pair_collides(const Frame& frame, const TrianglePair& pair);
 
-/// The colliding pairs among `candidates`, tested one after another on the calling thread,
-/// in the candidates' order.
+/// The colliding pairs among `candidates` (each as often as it is a candidate), tested in
+/// parallel on TBB's threads, as the engine's narrow phase runs: in no particular order.
 PairSet cgal_narrow_phase(const Frame& frame, std::span<const TrianglePair> candidates);
 
 }  // namespace collidescope::peers
