@@ -8,7 +8,7 @@
 #include "interrupt.hpp"
 #include "output_stream.hpp"
 #include "progress.hpp"
-#include "ranks.hpp"
+#include "ranks/ranks.hpp"
 #include "scene_input.hpp"
 
 #include "collidescope/error.hpp"

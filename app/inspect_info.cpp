@@ -1,5 +1,5 @@
 // What `collidescope inspect` reports about a recording, gathered once (printed as text or
-// JSON by inspect_command.cpp; the trace fuzz target gathers it too, fuzz/trace_entry.cpp).
+// JSON by inspect_command.cpp; the recording fuzz target gathers it too, fuzz/recording_entry.cpp).
 
 #include "inspect_info.hpp"
 

@@ -2,7 +2,7 @@
 // every error into one line on stderr and exit code 2 (the library never prints or exits).
 
 #include "commands.hpp"
-#include "ranks.hpp"
+#include "ranks/ranks.hpp"
 
 #include "collidescope/error.hpp"
 #include "collidescope/memory.hpp"
@@ -85,6 +85,6 @@ int main(int argc, char** argv) {
     collidescope::keep_freed_memory();
     // Under mpirun each rank runs the command on its block of frames; rank 0 assembles the
     // outputs (ranks.hpp). Serially this is just run().
-    collidescope::app::ranks::Session ranks(argc, argv);
+    collidescope::app::ranks::Launch ranks(argc, argv);
     return ranks.finish(run(argc, argv));
 }

@@ -1,4 +1,4 @@
-// `collidescope record`: runs a scene's frames through a method and writes the session trace
+// `collidescope record`: runs a scene's frames through a method and writes the recording
 // to one HDF5 file (recorder/, docs/reference/recording.md).
 
 #include "commands.hpp"
@@ -7,7 +7,7 @@
 #include "frame_range.hpp"
 #include "interrupt.hpp"
 #include "progress.hpp"
-#include "ranks.hpp"
+#include "ranks/ranks.hpp"
 #include "scene_input.hpp"
 #include "size_option.hpp"
 

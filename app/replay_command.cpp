@@ -7,7 +7,7 @@
 #include "interrupt.hpp"
 #include "named_cli_option.hpp"
 #include "progress.hpp"
-#include "ranks.hpp"
+#include "ranks/ranks.hpp"
 
 #include "collidescope/error.hpp"
 #include "collidescope/replays/replay.hpp"
@@ -160,7 +160,8 @@ std::string rate_line(const replays::ReplaySummary& summary, const replays::Repl
     return text + line;
 }
 
-int run_replay(const ReplayCliOptions& cli) {
+// The argument combinations replay refuses, each with its one line.
+void check_replay_arguments(const ReplayCliOptions& cli) {
     if (cli.diff != (cli.recordings.size() == 2)) {
         throw InputError(cli.diff ? "--diff needs two recordings: replay --diff A.h5 B.h5 -o DIR"
                                   : "replay takes one recording (two with --diff)");
@@ -173,63 +174,71 @@ int run_replay(const ReplayCliOptions& cli) {
     if (ranks::parallel() && cli.output.empty()) {
         throw InputError("under mpirun, --video needs -o DIR: the ranks write the frames there, rank 0 encodes them");
     }
-    replays::ReplayOptions options = replay_options(cli);
-    std::vector<std::uint32_t> replayed;
-    if (ranks::parallel()) replayed = take_block(cli.recordings[0], options);
-    // Every frame allocates a few image-sized buffers (3.7 MB at 1280x720: read back, PNG
-    // filter rows, deflate output). Above glibc's mmap threshold each is mapped and unmapped
-    // again, with page faults on every frame (measured: 8-10% of a frame at 1280x720); keep
-    // them in the heap, where freed blocks are reused.
-    mallopt(M_MMAP_THRESHOLD, 256 << 20);
-    mallopt(M_TRIM_THRESHOLD, 512 << 20);
-    std::unique_ptr<Progress> bar;  // made at the first frame, when the number of frames is known
-    // SIGINT or SIGTERM (mpirun's Ctrl-C) stops the replay between frames: the PNGs written so
-    // far stay, each complete; with --video, unwinding removes the unfinished clip.
+}
+
+// The progress bar and the stop between frames. SIGINT or SIGTERM (mpirun's Ctrl-C) stops the
+// replay between frames: the PNGs written so far stay, each complete; with --video, unwinding
+// removes the unfinished clip.
+class ReplayProgress {
+public:
     struct Interrupted {};
-    const InterruptGuard interrupt;
-    std::uint64_t done = 0;
-    std::uint64_t expected = 0;
-    auto frame_done = [&](std::uint64_t total) {
+
+    explicit ReplayProgress(const ReplayCliOptions& cli) : m_cli(cli) {}
+
+    /// The replayer's FrameDone: advances the bar; throws Interrupted after a signal.
+    void frame_done(std::uint64_t total) {
         // Under mpirun only rank 0 shows a bar (of its own block), so the ranks' bars do not garble.
-        if (!bar && ranks::leader()) bar = std::make_unique<Progress>(total);
-        if (bar) bar->advance();
-        ++done;
-        expected = total;
-        if (interrupt.signal() != 0 && done < total) throw Interrupted{};
-    };
-    auto stopped = [&] {
-        if (bar) bar->finish();
-        const int signal = interrupt.signal();
+        if (!m_bar && ranks::leader()) m_bar = std::make_unique<Progress>(total);
+        if (m_bar) m_bar->advance();
+        ++m_done;
+        m_expected = total;
+        if (m_interrupt.signal() != 0 && m_done < total) throw Interrupted{};
+    }
+    void finish() {
+        if (m_bar) m_bar->finish();
+    }
+    /// After Interrupted: the line, and the exit code of the signal.
+    int stopped() {
+        finish();
+        const int signal = m_interrupt.signal();
         // "replay: interrupted by SIGINT[; clip.mp4 not written]; 12 of 60 frames rendered[, every PNG in DIR complete]"
         std::string line = "replay: interrupted by " + signal_name(signal);
-        if (!cli.video.empty()) line += "; " + cli.video + " not written";
-        line += "; " + std::to_string(done) + " of " + std::to_string(expected) + " frames rendered";
-        if (!cli.output.empty()) line += ", every PNG in " + cli.output + " complete";
+        if (!m_cli.video.empty()) line += "; " + m_cli.video + " not written";
+        line += "; " + std::to_string(m_done) + " of " + std::to_string(m_expected) + " frames rendered";
+        if (!m_cli.output.empty()) line += ", every PNG in " + m_cli.output + " complete";
         std::fprintf(stderr, "%s\n", line.c_str());
         return interrupted_exit_code(signal);
-    };
-    if (cli.diff) {
-        replays::ReplaySummary summary;
-        try {
-            summary = replays::replay_diff(cli.recordings[0], cli.recordings[1], options, frame_done);
-        } catch (const Interrupted&) {
-            return stopped();
-        }
-        if (bar) bar->finish();
-        std::printf("wrote %llu side-by-side frames to %s (diff_NNNN.png): %llu pairs only in %s, %llu only in %s\n",
-                    static_cast<unsigned long long>(summary.frames), cli.output.c_str(),
-                    static_cast<unsigned long long>(summary.only_in_a), cli.recordings[0].c_str(),
-                    static_cast<unsigned long long>(summary.only_in_b), cli.recordings[1].c_str());
-        if (!cli.quiet) std::fprintf(stderr, "%s\n", rate_line(summary, options).c_str());
-        return summary.only_in_a + summary.only_in_b == 0 ? 0 : 1;
     }
+
+private:
+    const ReplayCliOptions& m_cli;
+    const InterruptGuard m_interrupt;
+    std::unique_ptr<Progress> m_bar;  // made at the first frame, when the number of frames is known
+    std::uint64_t m_done = 0;
+    std::uint64_t m_expected = 0;
+};
+
+// replay --diff: the side-by-side frames and the pairs each recording alone has.
+int run_replay_diff(const ReplayCliOptions& cli, const replays::ReplayOptions& options, ReplayProgress& progress) {
     replays::ReplaySummary summary;
     try {
-        summary = replays::replay(cli.recordings[0], options, frame_done);
-    } catch (const Interrupted&) {
-        return stopped();
+        summary = replays::replay_diff(cli.recordings[0], cli.recordings[1], options,
+                                       [&](std::uint64_t total) { progress.frame_done(total); });
+    } catch (const ReplayProgress::Interrupted&) {
+        return progress.stopped();
     }
-    if (bar) bar->finish();
+    progress.finish();
+    std::printf("wrote %llu side-by-side frames to %s (diff_NNNN.png): %llu pairs only in %s, %llu only in %s\n",
+                static_cast<unsigned long long>(summary.frames), cli.output.c_str(),
+                static_cast<unsigned long long>(summary.only_in_a), cli.recordings[0].c_str(),
+                static_cast<unsigned long long>(summary.only_in_b), cli.recordings[1].c_str());
+    if (!cli.quiet) std::fprintf(stderr, "%s\n", rate_line(summary, options).c_str());
+    return summary.only_in_a + summary.only_in_b == 0 ? 0 : 1;
+}
+
+// What a replay wrote: the notes, the rate, the frames, the clip and the contact sheet.
+void print_replay_summary(const ReplayCliOptions& cli, const replays::ReplayOptions& options,
+                          const std::vector<std::uint32_t>& replayed, const replays::ReplaySummary& summary) {
     if (ranks::leader()) {
         for (const std::string& note : summary.notes) std::fprintf(stderr, "replay: note: %s\n", note.c_str());
     }
@@ -245,6 +254,29 @@ int run_replay(const ReplayCliOptions& cli) {
                     static_cast<unsigned long long>(summary.frames), summary.video_fps, summary.video_seconds);
     }
     if (!summary.contact_sheet.empty()) std::printf("contact sheet: %s\n", summary.contact_sheet.c_str());
+}
+
+int run_replay(const ReplayCliOptions& cli) {
+    check_replay_arguments(cli);
+    replays::ReplayOptions options = replay_options(cli);
+    std::vector<std::uint32_t> replayed;
+    if (ranks::parallel()) replayed = take_block(cli.recordings[0], options);
+    // Every frame allocates a few image-sized buffers (3.7 MB at 1280x720: read back, PNG
+    // filter rows, deflate output). Above glibc's mmap threshold each is mapped and unmapped
+    // again, with page faults on every frame (measured: 8-10% of a frame at 1280x720); keep
+    // them in the heap, where freed blocks are reused.
+    mallopt(M_MMAP_THRESHOLD, 256 << 20);
+    mallopt(M_TRIM_THRESHOLD, 512 << 20);
+    ReplayProgress progress(cli);
+    if (cli.diff) return run_replay_diff(cli, options, progress);
+    replays::ReplaySummary summary;
+    try {
+        summary = replays::replay(cli.recordings[0], options, [&](std::uint64_t total) { progress.frame_done(total); });
+    } catch (const ReplayProgress::Interrupted&) {
+        return progress.stopped();
+    }
+    progress.finish();
+    print_replay_summary(cli, options, replayed, summary);
     return 0;
 }
 

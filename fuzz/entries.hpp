@@ -23,12 +23,12 @@ Outcome read_obj(std::span<const std::byte> bytes);
 /// open_inputs, then every frame read.
 Outcome read_scene(std::span<const std::byte> bytes);
 /// The bytes as a recording: what `inspect`, `validate` and `replay` read from it.
-Outcome read_trace(std::span<const std::byte> bytes);
+Outcome read_recording(std::span<const std::byte> bytes);
 /// The bytes as a point cache file (.pc2 when they start with "POINTCACHE2", else .mdd):
 /// PointCacheReader's header check, then every frame read.
 Outcome read_cache(std::span<const std::byte> bytes);
 
-/// The entry named `target` ("ply", "obj", "scene", "trace", "cache"); nullptr when there is none.
+/// The entry named `target` ("ply", "obj", "scene", "recording", "cache"); nullptr when there is none.
 using Entry = Outcome (*)(std::span<const std::byte>);
 Entry entry_named(std::string_view target);
 

@@ -55,7 +55,7 @@ Entry entry_named(std::string_view target) {
     if (target == "ply") return read_ply;
     if (target == "obj") return read_obj;
     if (target == "scene") return read_scene;
-    if (target == "trace") return read_trace;
+    if (target == "recording") return read_recording;
     if (target == "cache") return read_cache;
     return nullptr;
 }

@@ -7,7 +7,7 @@
 #   scripts/fuzz.sh run TARGET|all [SECONDS]   fuzz (default 1800 s each; all = one after another)
 #   scripts/fuzz.sh merge TARGET|all           minimise the run's corpus into tests/fuzz/corpus/
 #
-# Targets: ply, obj, scene, trace. A run starts from tests/fuzz/corpus/TARGET (copied into
+# Targets: ply, obj, scene, recording, cache. A run starts from tests/fuzz/corpus/TARGET (copied into
 # build-fuzz/corpus/TARGET, which keeps growing across runs), writes crashing inputs to
 # build-fuzz/findings/TARGET/ and its log to build-fuzz/logs/TARGET.log. Environment:
 # FUZZ_BUILD (build directory, default build-fuzz), FUZZ_JOBS (build jobs, default 2),
@@ -16,7 +16,7 @@ set -euo pipefail
 
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 BUILD=${FUZZ_BUILD:-$ROOT/build-fuzz}
-TARGETS=(ply obj scene trace cache)
+TARGETS=(ply obj scene recording cache)
 PACKAGES=(clang-14 libclang-rt-14-dev)
 
 log() { echo "fuzz: $*"; }
@@ -57,9 +57,9 @@ run_one() {
   unpack_corpus "$ROOT/tests/fuzz/corpus/$target" "$corpus"
   log "fuzzing $target for $seconds s (log: $BUILD/logs/$target.log)"
   # fuzz/lsan.supp names the one leak inside libhdf5 we cannot fix; matching it needs full
-  # stacks through the uninstrumented library, so the trace target unwinds slowly on malloc.
+  # stacks through the uninstrumented library, so the recording target unwinds slowly on malloc.
   local unwind=1 status=0
-  [ "$target" = trace ] && unwind=0
+  [ "$target" = recording ] && unwind=0
   ASAN_OPTIONS=${ASAN_OPTIONS:-fast_unwind_on_malloc=$unwind} \
   LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$ROOT/fuzz/lsan.supp:print_suppressions=0} \
   nice -n "${FUZZ_NICE:-10}" "$BUILD/fuzz/fuzz_$target" "$corpus" -max_total_time="$seconds" \
@@ -86,7 +86,7 @@ merge_one() {
   rm -rf "$committed"
   mkdir -p "$committed"
   cp "$fresh"/* "$committed"/
-  if [ "$target" = trace ]; then gzip -9n "$committed"/*; fi
+  if [ "$target" = recording ]; then gzip -9n "$committed"/*; fi
   rm -rf "$fresh" "$unpacked"
   log "$target: $(ls "$committed" | wc -l) inputs, $(cat "$committed"/* | wc -c) bytes in tests/fuzz/corpus/$target"
 }

@@ -34,7 +34,7 @@ PACKAGES=(
   # peers of the aabb method (bench/peers: bench_bvh_peers, bench_embree_cgal_peers; built
   # only when present)
   libembree-dev libfcl-dev libcgal-dev
-  # trace scripts and their tests
+  # recording scripts and their tests
   python3 python3-h5py python3-numpy python3-matplotlib
   # python module and its tests: pybind11 builds `collidescope._core` for Debian's python3
   # (its headers come with python3-dev); pytest runs python/tests from ctest

@@ -63,6 +63,7 @@ struct Session::Impl {
     /// Per object: positions converted from float32 or strided input (capacity reused).
     std::vector<std::vector<Vec3>> converted;
     FrameResult result;
+    StepStats step_stats;  ///< the flat part of result.stats (stats())
     std::vector<CollidingPair> pairs;
     std::unique_ptr<recorder::Recorder> recorder;
     bool closed = false;
@@ -181,6 +182,7 @@ std::span<const CollidingPair> Session::step(std::span<const VertexView> positio
     impl.take_positions(positions);
     impl.start_recording_once();
     impl.result = impl.pipeline.process(impl.frame);
+    impl.step_stats = {impl.result.stats.frame, impl.result.stats.method, impl.result.stats.ms, impl.result.stats.counts};
     ++impl.frame.index;
     impl.pairs.resize(impl.result.colliding_pairs.size());
     std::transform(impl.result.colliding_pairs.begin(), impl.result.colliding_pairs.end(), impl.pairs.begin(),
@@ -188,7 +190,7 @@ std::span<const CollidingPair> Session::step(std::span<const VertexView> positio
     return impl.pairs;
 }
 
-const FrameStats& Session::stats() const { return m_impl->result.stats; }
+const StepStats& Session::stats() const { return m_impl->step_stats; }
 std::string Session::stats_json() const { return collidescope::stats_json(m_impl->result.stats); }
 std::uint32_t Session::frame_count() const { return m_impl->frame.index; }
 std::uint32_t Session::object_count() const { return static_cast<std::uint32_t>(m_impl->names.size()); }

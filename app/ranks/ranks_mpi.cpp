@@ -1,7 +1,7 @@
 // Frame-parallel runs under MPI (ranks.hpp, docs/how-to/mpi.md): Open MPI's C API, called from the
 // main thread only (the engine's worker threads never touch MPI).
 
-#include "ranks.hpp"
+#include "ranks/ranks.hpp"
 
 #include "interrupt.hpp"
 #include "output_stream.hpp"
@@ -232,7 +232,7 @@ int assemble_recording(const std::string& target, RecordingJoin join, const std:
 
 }  // namespace
 
-Session::Session(int& argc, char**& argv) {
+Launch::Launch(int& argc, char**& argv) {
     if (!launched_by_mpi()) return;
     int provided = 0;
     MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
@@ -245,7 +245,7 @@ Session::Session(int& argc, char**& argv) {
     if (g_state.active) g_state.interrupt.emplace();
 }
 
-Session::~Session() {
+Launch::~Launch() {
     g_state.interrupt.reset();
     int initialized = 0, finalized = 0;
     MPI_Initialized(&initialized);
@@ -253,7 +253,7 @@ Session::~Session() {
     if (initialized != 0 && finalized == 0) MPI_Finalize();
 }
 
-int Session::finish(int code) {
+int Launch::finish(int code) {
     if (!g_state.active) return code;
     std::vector<int> codes(static_cast<std::size_t>(g_state.size));
     MPI_Allgather(&code, 1, MPI_INT, codes.data(), 1, MPI_INT, MPI_COMM_WORLD);

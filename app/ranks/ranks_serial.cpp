@@ -1,12 +1,12 @@
 // A build without MPI (Open MPI's packages were not found): every run is serial (ranks.hpp).
 
-#include "ranks.hpp"
+#include "ranks/ranks.hpp"
 
 namespace collidescope::app::ranks {
 
-Session::Session(int&, char**&) {}
-Session::~Session() = default;
-int Session::finish(int code) { return code; }
+Launch::Launch(int&, char**&) {}
+Launch::~Launch() = default;
+int Launch::finish(int code) { return code; }
 bool parallel() { return false; }
 bool leader() { return true; }
 void when_done(std::function<int()>) {}

@@ -12,7 +12,7 @@
 #include "peers/peer_common.hpp"
 
 #include "methods/aabb_method.hpp"
-#include "common/object_level.hpp"
+#include "stages/object_level.hpp"
 
 #include "collidescope/datasets.hpp"
 

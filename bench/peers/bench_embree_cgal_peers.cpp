@@ -29,8 +29,8 @@
 #include "peers/embree_peer.hpp"
 #include "peers/fcl_peer.hpp"
 
-#include "common/narrow_phase.hpp"
-#include "common/object_level.hpp"
+#include "stages/narrow_phase.hpp"
+#include "stages/object_level.hpp"
 
 #include "collidescope/datasets.hpp"
 #include "collidescope/memory.hpp"
@@ -205,7 +205,7 @@ PeerRun run_peer(const std::vector<Frame>& frames, bool self, const std::vector<
 /// Where the narrow phases' time goes, per timed frame (means; untimed in the table):
 /// candidates within one object that share a vertex index (always box-overlapping, decided by
 /// the self rule) against the rest, each set run sequentially through the engine's exact test
-/// (common/narrow_phase.hpp, one thread) and the peer's.
+/// (stages/narrow_phase.hpp, one thread) and the peer's.
 struct AdjacentSplit {
     std::size_t adjacent = 0, other = 0;
     double engine_adjacent_ms = 0, engine_other_ms = 0, cgal_adjacent_ms = 0, cgal_other_ms = 0;

@@ -157,7 +157,7 @@ bool cgal_pair_collides(const Frame& frame, const TrianglePair& pair) {
 PairSet cgal_narrow_phase(const Frame& frame, std::span<const TrianglePair> candidates) {
     // CGAL's Epick predicates are thread-safe (their interval filters set the rounding mode of
     // the calling thread only), so the candidates split over TBB's threads as the engine's
-    // narrow phase does (common/narrow_phase.cpp), each thread keeping what it found.
+    // narrow phase does (stages/narrow_phase.cpp), each thread keeping what it found.
     tbb::enumerable_thread_specific<PairSet> found;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 512),
                       [&](const tbb::blocked_range<std::size_t>& range) {

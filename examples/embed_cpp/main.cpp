@@ -39,7 +39,7 @@ int run(const std::string& spec, const char* pairs_path, const char* record_path
             if (pairs_file != nullptr) std::fprintf(pairs_file, "%u\t%u\t%u\t%u\t%u\n", frame, p.obj_a, p.tri_a, p.obj_b, p.tri_b);
         }
         total += pairs.size();
-        const collidescope::FrameStats& stats = session.stats();
+        const collidescope::StepStats& stats = session.stats();
         std::printf("frame %u: %zu colliding pairs, %.3f ms (%s)\n", frame, pairs.size(), stats.ms.total, stats.method.c_str());
     }
     session.close();  // finishes the recording

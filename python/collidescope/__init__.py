@@ -8,7 +8,7 @@
     rec = collidescope.open("run.h5")            # len(rec), rec.pairs(f), rec.positions(f, k), rec.stats
 
 `Session`, `scene` and `scene_files` are the compiled core (`collidescope._core`, pybind11 on
-libcollidescope); `open` is pure Python on h5py and numpy, so the trace scripts need nothing
+libcollidescope); `open` is pure Python on h5py and numpy, so the recording scripts need nothing
 built. docs/reference/embedding.md is the reference.
 """
 from .recording import Recording, RecordingError, open  # noqa: F401  (open shadows the builtin here only)

@@ -102,7 +102,7 @@ stats: the last frame's stats as a dict with the names of `check --stats` (None 
 record: an .h5 path; the file `collidescope record` writes (replay, inspect, collidescope.open).
 close() (or leaving a `with` block) finishes the recording.)";
 
-// The benchmark's C++ side (bench/session_step.py): steps `session` through `frames` (each a
+// The benchmark's C++ side (bench/scripts/session_step.py): steps `session` through `frames` (each a
 // list of per-object arrays) in a C++ loop, timing each Session::step alone, as a C++ caller
 // would run it; the views are made before the clock starts. Returns seconds per frame.
 std::vector<double> cpp_step_times(PySession& session, const py::sequence& frames) {
@@ -149,7 +149,7 @@ void bind_session(py::module_& m) {
         .def("__enter__", [](PySession& s) -> PySession& { return s; }, py::return_value_policy::reference)
         .def("__exit__", [](PySession& s, const py::args&) { s.session.close(); });
     m.def("_cpp_step_times", &cpp_step_times, py::arg("session"), py::arg("frames"),
-          "Benchmark hook: seconds per Session::step in a C++ loop over `frames` (bench/session_step.py).");
+          "Benchmark hook: seconds per Session::step in a C++ loop over `frames` (bench/scripts/session_step.py).");
 }
 
 }  // namespace collidescope::python

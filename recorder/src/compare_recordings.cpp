@@ -2,6 +2,8 @@
 
 #include "collidescope/recorder/compare.hpp"
 
+#include "collidescope/recorder/reader.hpp"
+
 #include <algorithm>
 #include <iterator>
 

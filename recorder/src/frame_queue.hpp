@@ -2,9 +2,8 @@
 // A frame as the writer thread needs it (copied off the engine's spans), and the bounded queue
 // between the engine's thread and the writer thread.
 
-#include "large_blocks.hpp"
-
 #include "collidescope/gpu_cull.hpp"
+#include "collidescope/large_blocks.hpp"
 #include "collidescope/scene.hpp"
 #include "collidescope/types.hpp"
 
@@ -17,6 +16,11 @@
 #include <vector>
 
 namespace collidescope::recorder {
+
+/// A frame buffer: the platform's large blocks, unmapped when the writer thread frees them
+/// (collidescope/large_blocks.hpp, BlockReuse::Release).
+template <class T>
+using LargeVector = detail::LargeVector<T, detail::BlockReuse::Release>;
 
 /// One object of one frame.
 struct ObjectRecord {

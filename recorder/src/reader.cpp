@@ -2,7 +2,7 @@
 
 #include "collidescope/recorder/reader.hpp"
 
-#include "recording_impl.hpp"
+#include "recording_state.hpp"
 #include "virtual_sources.hpp"
 
 #include "collidescope/recorder/schema.hpp"
@@ -19,7 +19,7 @@ constexpr unsigned k_swmr_read_attempts = 8;
 
 }  // namespace
 
-void Recording::Impl::open_file() {
+void RecordingState::open_file() {
     h5::silence();
     const std::string& path = where.file();
     std::error_code error;
@@ -46,7 +46,7 @@ void Recording::Impl::open_file() {
     recorder::virtual_sources::check(where, virtual_sources);
 }
 
-void Recording::Impl::check_schema() {
+void RecordingState::check_schema() {
     const std::optional<std::string> name = h5::read_string_attr(where, file.get(), schema::k_attr_schema);
     if (!name || *name != schema::k_schema_name) {
         where.fail("not a collidescope recording (no '" + std::string(schema::k_attr_schema) + "' = '" +
@@ -71,7 +71,7 @@ void Recording::Impl::check_schema() {
     read_time_attributes();
 }
 
-void Recording::Impl::read_time_attributes() {
+void RecordingState::read_time_attributes() {
     fps = h5::read_double_attr(where, file.get(), schema::k_attr_fps).value_or(0);
     if (!(fps >= 0) || !std::isfinite(fps)) {
         where.fail("attribute " + std::string(schema::k_attr_fps) + " is not a positive number");
@@ -84,7 +84,7 @@ void Recording::Impl::read_time_attributes() {
     up_axis = up.empty() ? 0 : up[0];
 }
 
-void Recording::Impl::count_frames() {
+void RecordingState::count_frames() {
     std::uint64_t n = rows(schema::k_frame_index);
     n = std::min(n, rows(schema::k_frame_method));
     if (h5::exists(file.get(), schema::k_frame_time)) n = std::min(n, rows(schema::k_frame_time));
@@ -113,7 +113,7 @@ void Recording::Impl::count_frames() {
     frames = n;
 }
 
-void Recording::Impl::read_objects() {
+void RecordingState::read_objects() {
     const std::size_t count = group_members(schema::k_objects).size();
     for (std::uint32_t k = 0; k < count; ++k) {
         const std::string prefix = schema::object_group(k) + "/";
@@ -151,7 +151,7 @@ void Recording::Impl::read_objects() {
     }
 }
 
-Recording::Recording(const std::filesystem::path& path) : m_impl(std::make_unique<Impl>(path.string())) {
+Recording::Recording(const std::filesystem::path& path) : m_impl(std::make_unique<RecordingState>(path.string())) {
     m_impl->open_file();
     m_impl->check_schema();
     m_impl->count_frames();
@@ -204,7 +204,7 @@ std::vector<std::uint64_t> Recording::read_u64(const std::string& dataset) const
 }
 
 std::vector<std::string> Recording::frame_methods() const {
-    const Impl& impl = *m_impl;
+    const RecordingState& impl = *m_impl;
     const std::string path = schema::k_frame_method;
     const h5::Id d = impl.dataset(path);
     const h5::Id type = impl.where.own(H5Dget_type(d.get()), H5Tclose, "cannot read the type of " + path);

@@ -5,7 +5,7 @@
 #include "file_budget.hpp"
 #include "frame_copier.hpp"
 #include "frame_queue.hpp"
-#include "trace_file.hpp"
+#include "recording_writer.hpp"
 
 #include "collidescope/error.hpp"
 #include "collidescope/pipeline.hpp"
@@ -41,7 +41,7 @@ std::string write_error_line(const std::string& what, std::uint64_t intact, bool
 struct Recorder::State {
     RecorderConfig config;
     FrameCopier copier;
-    TraceFile file;
+    RecordingWriter file;
     FrameQueue queue;
     FileBudget budget;
     RecordSummary summary;
@@ -76,7 +76,7 @@ void Recorder::State::write_loop() {
     try {
         for (FrameQueue::Taken taken; !(taken = queue.take_waiting(batch)).records.empty();) {
             const std::vector<FrameRecord>& records = taken.records;
-            std::vector<TraceFile::Keep> keeps(records.size());
+            std::vector<RecordingWriter::Keep> keeps(records.size());
             for (std::size_t i = 0; i < records.size(); ++i) {
                 keeps[i].positions = budget.keep_positions(summary.frames + i);
                 keeps[i].depth = !records[i].depth_images.empty() && budget.keep_depth();
@@ -141,7 +141,7 @@ RecordSummary Recorder::finish(const std::string& interrupted) {
     if (state.writer.joinable()) state.writer.join();
     state.rethrow_writer_error();
     state.file.close();
-    TraceFile::mark_finished(state.config.path, state.summary.frames, state.budget.positions_stride(), interrupted);
+    RecordingWriter::mark_finished(state.config.path, state.summary.frames, state.budget.positions_stride(), interrupted);
     state.summary.positions_stride = state.budget.positions_stride();
     state.summary.depth_stride = state.budget.depth_stride();
     state.summary.queue_peak_bytes = state.queue.peak_bytes();

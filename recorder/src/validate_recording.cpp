@@ -2,6 +2,8 @@
 
 #include "collidescope/recorder/validate.hpp"
 
+#include "collidescope/recorder/reader.hpp"
+
 #include "collidescope/error.hpp"
 #include "collidescope/recorder/schema.hpp"
 

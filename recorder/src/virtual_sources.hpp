@@ -8,7 +8,7 @@
 
 #include "h5.hpp"
 
-#include "collidescope/recorder/reader.hpp"
+#include "collidescope/recorder/recording_info.hpp"
 
 #include <filesystem>
 #include <string>

@@ -7,6 +7,7 @@
 #include "collidescope/error.hpp"
 
 #include <cstring>
+#include <vector>
 
 namespace collidescope::replays {
 namespace {

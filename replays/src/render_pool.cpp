@@ -16,7 +16,7 @@ namespace collidescope::replays {
 RenderThread make_render_thread(GlBackend gl, int width, int height, float font_size) {
     RenderThread thread;
     try {
-        thread.context = gpucull::make_gl_context(gl);
+        thread.context = gl::make_gl_context(gl);
     } catch (const UnavailableError& error) {
         throw UnavailableError(std::string("replay: no offscreen GL context (") + error.what() + ")");
     }

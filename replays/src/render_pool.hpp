@@ -17,7 +17,7 @@ namespace collidescope::replays {
 
 /// What one render thread owns, in its own GL context.
 struct RenderThread {
-    std::unique_ptr<gpucull::GlContext> context;
+    std::unique_ptr<gl::GlContext> context;
     std::unique_ptr<MeshRenderer> renderer;
     std::unique_ptr<Overlay> overlay;
 };

@@ -5,6 +5,7 @@
 
 #include "contact_sheet.hpp"
 #include "frame_data.hpp"
+#include "open_video.hpp"
 #include "ordered_video.hpp"
 #include "png.hpp"
 #include "render_pool.hpp"
@@ -156,128 +157,185 @@ SessionView session_view(const RecordingData& data) {
     return session;
 }
 
+namespace {
+
+// What every frame job of one replay shares: the frames, the camera, the layout, the contact
+// sheet's picks, and which ordinals this process renders.
+struct ReplayPlan {
+    std::vector<std::uint64_t> rows;   ///< recording rows replayed, in order (ordinal i -> rows[i])
+    Bounds bounds;
+    CameraSpec camera;
+    std::vector<Framing> focus;        ///< per ordinal, for --camera focus; else empty
+    FrameLayout layout;
+    SessionView session;
+    std::vector<double> totals;        ///< per ordinal: the frame's total ms
+    std::vector<std::uint64_t> pairs;  ///< per ordinal: its colliding pairs
+    std::set<std::uint64_t> on_sheet;  ///< ordinals the contact sheet shows
+    TileSize tile;                     ///< a sheet tile's size
+    std::vector<bool> in_part;         ///< ordinal i is in this process's part (its PNG is written)
+    std::vector<std::uint64_t> jobs;   ///< ordinals to render: the part's, then the sheet's others
+    std::uint64_t own_frames = 0;      ///< ordinals in the part
+};
+
+ReplayPlan plan_replay(RecordingData& data, const ReplayOptions& options, ReplaySummary& summary) {
+    ReplayPlan plan;
+    plan.rows = replay_rows(data, options);
+    plan.bounds = data.bounds(plan.rows);
+    plan.camera = resolved_camera(options.camera, data);
+    plan.focus = focus_of(plan.camera, data, plan.rows, plan.bounds, summary);
+    plan.layout = frame_layout(options.width, options.height, options.layers);
+    plan.session = session_view(data);
+    for (const std::uint64_t row : plan.rows) {
+        plan.totals.push_back(data.totals()[row]);
+        plan.pairs.push_back(data.pair_counts()[row]);
+    }
+    const std::vector<std::uint64_t> picked =
+        options.contact_sheet.empty()
+            ? std::vector<std::uint64_t>{}
+            : select_sheet_frames(options.sheet_selection, options.sheet_count, plan.totals, plan.pairs);
+    plan.on_sheet = std::set<std::uint64_t>(picked.begin(), picked.end());
+    // The sheet shows each frame's meshes (the scene's part of the image); its captions and
+    // header carry the rest.
+    plan.tile = sheet_tile_size(plan.layout.scene.w, plan.layout.scene.h);
+    plan.jobs = render_jobs(data, plan.rows, options, picked, plan.in_part);
+    plan.own_frames = static_cast<std::uint64_t>(std::count(plan.in_part.begin(), plan.in_part.end(), true));
+    return plan;
+}
+
+// One rendered frame, before it goes to the PNG, the sheet and the clip.
+struct RenderedFrame {
+    FrameData frame;
+    std::vector<std::uint8_t> rgba;
+    double read = 0;  ///< seconds per step
+    double draw = 0;
+    double readback = 0;
+};
+
+// What the replayed frames held, for the notes at the end (layers asked for but not recorded).
+struct Seen {
+    bool depth = false;
+    bool pcs = false;
+    bool decision = false;
+    std::uint64_t dropped = 0;  ///< frames whose positions the recording dropped
+};
+
+// Ordinal i's frame: read (under the reader's lock: one reader at a time), drawn and read back.
+RenderedFrame render_frame(RenderThread& thread, RecordingData& data, std::mutex& reader_lock,
+                           const ReplayPlan& plan, const ReplayOptions& options, std::uint64_t i) {
+    StepClock clock;
+    RenderedFrame out;
+    {
+        const std::lock_guard<std::mutex> guard(reader_lock);
+        out.frame = data.load(plan.rows[i], i);
+    }
+    out.read = clock.lap();
+    const Camera camera = make_camera(plan.camera, plan.bounds, plan.layout.scene, i, plan.rows.size(),
+                                      plan.focus.empty() ? nullptr : &plan.focus[i]);
+    thread.renderer->clear();
+    thread.renderer->draw(out.frame, camera, options.layers);
+    thread.overlay->draw_frame(out.frame, plan.session, plan.layout, options.layers);
+    out.draw = clock.lap();
+    out.rgba = thread.renderer->read_rgba();
+    out.readback = clock.lap();
+    return out;
+}
+
+// Ordinal i's sheet tile: the scene's part of the image, scaled down, with its caption.
+SheetTile sheet_tile(const RenderedFrame& rendered, const ReplayPlan& plan, const ReplayOptions& options,
+                     std::uint64_t i) {
+    const Rect& scene = plan.layout.scene;
+    const FrameData& frame = rendered.frame;
+    return {downscale(crop(rendered.rgba, options.width, scene.x, scene.y, scene.w, scene.h), scene.w, scene.h,
+                      plan.tile.width, plan.tile.height),
+            frame.frame, frame_mode(frame.method, frame.decision), frame.method, frame.colliding.size(),
+            plan.totals[i]};
+}
+
+// The notes a replay ends with: layers asked for that the recording lacks, frames without meshes.
+void add_notes(const ReplayOptions& options, const ReplayPlan& plan, const Seen& seen, ReplaySummary& summary) {
+    if ((options.layers & k_layer_depth) != 0 && !seen.depth) {
+        summary.notes.push_back("no depth buffers in this recording (record --method gpu --depth every:N): no thumbnails");
+    }
+    if ((options.layers & k_layer_pcs) != 0 && !seen.pcs) {
+        summary.notes.push_back("no GPU cull state in this recording (method " + plan.session.method +
+                                "): PCS and culled triangles not shown");
+    }
+    if ((options.layers & k_layer_overlay) != 0 && !seen.decision) {
+        summary.notes.push_back("no decisions in this recording (record --method adaptive): the panel says not recorded");
+    }
+    if (seen.dropped > 0) {
+        summary.notes.push_back("the vertex positions of " + std::to_string(seen.dropped) + " of " +
+                                std::to_string(plan.own_frames) +
+                                " frames were not recorded (record --budget): those frames show no meshes");
+    }
+}
+
+}  // namespace
+
 ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions& options, const FrameDone& frame_done) {
     if (!options.video.empty() && !whole_replay(options)) {
         throw InputError(options.video.string() + ": a clip needs every replayed frame in one process, not a part");
     }
     RecordingData data(recording);
-    const std::vector<std::uint64_t> rows = replay_rows(data, options);
+    ReplaySummary summary;
+    const ReplayPlan plan = plan_replay(data, options, summary);
     const bool pngs = !options.output_dir.empty();
     if (pngs) prepare_output_dir(options.output_dir);
-    ReplaySummary summary;
     const std::unique_ptr<OrderedVideo> video = open_ordered_video(data, options, summary);
-    const Bounds bounds = data.bounds(rows);
-    const CameraSpec camera_spec = resolved_camera(options.camera, data);
-    const std::vector<Framing> focus = focus_of(camera_spec, data, rows, bounds, summary);
-    const FrameLayout layout = frame_layout(options.width, options.height, options.layers);
-    const SessionView session = session_view(data);
 
-    std::vector<double> totals;
-    std::vector<std::uint64_t> pairs;
-    for (const std::uint64_t row : rows) {
-        totals.push_back(data.totals()[row]);
-        pairs.push_back(data.pair_counts()[row]);
-    }
-    const bool sheet = !options.contact_sheet.empty();
-    const std::vector<std::uint64_t> picked =
-        sheet ? select_sheet_frames(options.sheet_selection, options.sheet_count, totals, pairs) : std::vector<std::uint64_t>{};
-    const std::set<std::uint64_t> on_sheet(picked.begin(), picked.end());
-    std::vector<bool> in_part;
-    const std::vector<std::uint64_t> jobs = render_jobs(data, rows, options, picked, in_part);
-    const auto own_frames = static_cast<std::uint64_t>(std::count(in_part.begin(), in_part.end(), true));
-    // The sheet shows each frame's meshes (the scene's part of the image); its captions and
-    // header carry the rest.
-    const TileSize tile = sheet_tile_size(layout.scene.w, layout.scene.h);
+    std::vector<std::filesystem::path> files(plan.rows.size());
     std::map<std::uint64_t, SheetTile> tiles;
-
-    std::vector<std::filesystem::path> files(rows.size());
+    Seen seen;
     std::mutex reader_lock;
     std::mutex done_lock;
-    bool any_depth = false;
-    bool any_pcs = false;
-    bool any_decision = false;
-    std::uint64_t dropped = 0;
     const auto start = std::chrono::steady_clock::now();
-    summary.renderer = run_parallel(options.gl, options.threads, jobs.size(), options.width, options.height,
+    summary.renderer = run_parallel(options.gl, options.threads, plan.jobs.size(), options.width, options.height,
                                     [&](RenderThread& thread, std::uint64_t job) {
-        const std::uint64_t i = jobs[job];
+        const std::uint64_t i = plan.jobs[job];
+        RenderedFrame rendered = render_frame(thread, data, reader_lock, plan, options, i);
         StepClock clock;
-        FrameData frame;
-        {
-            const std::lock_guard<std::mutex> guard(reader_lock);
-            frame = data.load(rows[i], i);
-        }
-        const double read = clock.lap();
-        const Camera camera =
-            make_camera(camera_spec, bounds, layout.scene, i, rows.size(), focus.empty() ? nullptr : &focus[i]);
-        thread.renderer->clear();
-        thread.renderer->draw(frame, camera, options.layers);
-        thread.overlay->draw_frame(frame, session, layout, options.layers);
-        const double draw = clock.lap();
-        std::vector<std::uint8_t> rgba = thread.renderer->read_rgba();
-        const double readback = clock.lap();
         std::filesystem::path file;
-        if (pngs && in_part[i]) {
-            file = frame_file(options.output_dir, "frame", frame.frame);
-            write_png(file, rgba, options.width, options.height);
+        if (pngs && plan.in_part[i]) {
+            file = frame_file(options.output_dir, "frame", rendered.frame.frame);
+            write_png(file, rendered.rgba, options.width, options.height);
         }
         const double png = clock.lap();
-        SheetTile sheet_tile;
-        if (on_sheet.count(i) != 0) {
-            const Rect& scene = layout.scene;
-            sheet_tile = {downscale(crop(rgba, options.width, scene.x, scene.y, scene.w, scene.h), scene.w, scene.h,
-                                    tile.width, tile.height),
-                          frame.frame,
-                          frame_mode(frame.method, frame.decision), frame.method, frame.colliding.size(), totals[i]};
-        }
-        if (video) video->add(i, std::move(rgba));
+        const bool on_sheet = plan.on_sheet.count(i) != 0;
+        SheetTile tile = on_sheet ? sheet_tile(rendered, plan, options, i) : SheetTile{};
+        if (video) video->add(i, std::move(rendered.rgba));
         const std::lock_guard<std::mutex> guard(done_lock);
-        if (on_sheet.count(i) != 0) tiles[i] = std::move(sheet_tile);
-        if (!in_part[i]) return;  // rendered for the contact sheet alone
+        if (on_sheet) tiles[i] = std::move(tile);
+        if (!plan.in_part[i]) return;  // rendered for the contact sheet alone
+        const FrameData& frame = rendered.frame;
         files[i] = file;
-        summary.read_seconds += read;
-        summary.draw_seconds += draw;
-        summary.readback_seconds += readback;
+        summary.read_seconds += rendered.read;
+        summary.draw_seconds += rendered.draw;
+        summary.readback_seconds += rendered.readback;
         summary.png_seconds += png;
         if (job == 0) {
             for (const ObjectFrame& object : frame.objects) summary.triangles += object.triangles->size();
         }
-        any_depth = any_depth || !frame.depth_images.empty();
-        any_pcs = any_pcs || frame.pcs_recorded;
-        any_decision = any_decision || !frame.decision.empty();
-        dropped += frame.positions_dropped ? 1 : 0;
+        seen.depth = seen.depth || !frame.depth_images.empty();
+        seen.pcs = seen.pcs || frame.pcs_recorded;
+        seen.decision = seen.decision || !frame.decision.empty();
+        seen.dropped += frame.positions_dropped ? 1 : 0;
         ++summary.frames;
-        if (frame_done) frame_done(own_frames);
+        if (frame_done) frame_done(plan.own_frames);
     });
-    if (pngs) {
-        for (const std::filesystem::path& file : files) {
-            if (!file.empty()) summary.files.push_back(file);
-        }
+    for (const std::filesystem::path& file : files) {
+        if (!file.empty()) summary.files.push_back(file);
     }
     if (video) {
-        video->finish(rows.size());
+        video->finish(plan.rows.size());
         summary.video_seconds = video->seconds();
     }
     summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    summary.threads = render_threads(options.threads, jobs.size());
-    if ((options.layers & k_layer_depth) != 0 && !any_depth) {
-        summary.notes.push_back("no depth buffers in this recording (record --method gpu --depth every:N): no thumbnails");
-    }
-    if ((options.layers & k_layer_pcs) != 0 && !any_pcs) {
-        summary.notes.push_back("no GPU cull state in this recording (method " + session.method +
-                                "): PCS and culled triangles not shown");
-    }
-    if ((options.layers & k_layer_overlay) != 0 && !any_decision) {
-        summary.notes.push_back("no decisions in this recording (record --method adaptive): the panel says not recorded");
-    }
-    if (dropped > 0) {
-        summary.notes.push_back("the vertex positions of " + std::to_string(dropped) + " of " + std::to_string(own_frames) +
-                                " frames were not recorded (record --budget): those frames show no meshes");
-    }
-    if (sheet) {
+    summary.threads = render_threads(options.threads, plan.jobs.size());
+    add_notes(options, plan, seen, summary);
+    if (!options.contact_sheet.empty()) {
         std::vector<SheetTile> ordered;
         for (auto& [i, one] : tiles) ordered.push_back(std::move(one));
-        write_contact_sheet(options.contact_sheet, ordered, tile, session, options.sheet_selection, options.gl);
+        write_contact_sheet(options.contact_sheet, ordered, plan.tile, plan.session, options.sheet_selection, options.gl);
         summary.contact_sheet = options.contact_sheet;
     }
     return summary;

@@ -6,8 +6,7 @@
 //
 // Frames go in in order. The clip is written under a temporary name beside the target and
 // renamed onto it by finish(), so a failed or interrupted replay leaves no half-written file.
-
-#include "collidescope/replays/replay.hpp"  // check_video_path
+// open_video.hpp opens one; video_backends.hpp declares the backends.
 
 #include <cstdint>
 #include <filesystem>
@@ -23,7 +22,7 @@ struct VideoSettings {
     int width = 0;               ///< of the frames fed in, pixels
     int height = 0;
     double fps = 30;             ///< frames per second of the clip (> 0)
-    /// x264's speed/size trade-off (its --preset) for .mp4; bench/bench_video_encode.cpp and
+    /// x264's speed/size trade-off (its --preset) for .mp4; bench/micro/bench_video_encode.cpp and
     /// records/video-encoding.md compare them.
     std::string h264_preset = "veryfast";
 };
@@ -41,10 +40,5 @@ public:
     /// Frames added so far.
     virtual std::uint64_t frames() const = 0;
 };
-
-/// Opens the clip `settings.path` for writing (its backend by extension). Throws InputError
-/// naming the file (unknown extension, unwritable directory) or UnavailableError when this
-/// FFmpeg lacks the encoder (libx264, gif) or filters (palettegen, paletteuse).
-std::unique_ptr<VideoEncoder> open_video(const VideoSettings& settings);
 
 }  // namespace collidescope::replays

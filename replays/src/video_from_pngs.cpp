@@ -5,7 +5,7 @@
 #include "collidescope/replays/replay.hpp"
 
 #include "replay_common.hpp"
-#include "video_encoder.hpp"
+#include "open_video.hpp"
 
 #include "collidescope/error.hpp"
 #include "collidescope/recorder/reader.hpp"

@@ -1,4 +1,4 @@
-// Frame-parallel runs under mpirun (app/ranks.hpp, docs/how-to/mpi.md): the blocks of frames each rank
+// Frame-parallel runs under mpirun (app/ranks/ranks.hpp, docs/how-to/mpi.md): the blocks of frames each rank
 // takes; `check` on 2 and 3 ranks (oversubscribed) gives the serial run's pairs TSV byte for
 // byte, its stats in frame order and its exit code, for every method; `record` on 2 ranks gives
 // a recording that `compare` finds equal to the serial one, joined virtually over the parts it
@@ -9,7 +9,7 @@
 // Open MPI refuses to run as root (CI does) unless told: the tests set its two variables. Under
 // CI=true a build without Open MPI, or no mpirun, fails these tests instead of skipping them.
 
-#include "ranks.hpp"
+#include "ranks/ranks.hpp"
 
 #include "mpi_run.hpp"
 

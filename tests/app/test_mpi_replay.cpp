@@ -1,4 +1,4 @@
-// Under mpirun (app/ranks.hpp, docs/how-to/mpi.md), beyond the blocks of test_mpi_ranks.cpp: `replay`
+// Under mpirun (app/ranks/ranks.hpp, docs/how-to/mpi.md), beyond the blocks of test_mpi_ranks.cpp: `replay`
 // on 2 and 3 ranks writes the serial replay's PNGs, contact sheet and clip byte for byte;
 // `check` prints one total line for the run, in the serial line's form; Ctrl-C (SIGINT
 // to mpirun) stops every rank of a `record` after its current frame, with the documented line

@@ -4,7 +4,7 @@
 #include "support/brute_reference.hpp"
 #include "support/scene_builders.hpp"
 
-#include "common/object_level.hpp"
+#include "stages/object_level.hpp"
 
 #include "collidescope/geometry.hpp"
 #include "collidescope/pipeline.hpp"

@@ -6,8 +6,10 @@ docs/explanation/architecture.md lists the folders of engine/src, one layer per 
 This check fails when
   - a folder of engine/src is in no layer, or the diagram names a folder that does not exist;
   - a file includes a folder of a higher layer (`#include "methods/..."` from bvh/, say);
-  - a file below the methods includes collidescope/pipeline.hpp, which declares Method: the
-    algorithms know nothing of methods.
+  - a file includes a public header (engine/include/collidescope/) that a higher layer
+    implements: a header belongs to the lowest folder with a .cpp whose first include it is
+    (collidescope/pipeline.hpp to pipeline/, say), so the algorithms cannot reach the pipeline
+    through its public header. Headers no .cpp implements (interfaces, options) belong to none.
 
 Usage: check_engine_layers.py SOURCE_DIR
 """
@@ -18,8 +20,6 @@ import sys
 
 BEGIN, END = "<!-- engine-layers -->", "<!-- /engine-layers -->"
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.MULTILINE)
-# Public headers that belong to a layer: only that layer and those above may include them.
-LAYERED_HEADERS = {"collidescope/pipeline.hpp": "methods"}
 
 
 def read_layers(architecture: pathlib.Path) -> list[list[str]]:
@@ -39,6 +39,22 @@ def read_layers(architecture: pathlib.Path) -> list[list[str]]:
         if folders:
             layers.append(folders)
     return layers
+
+
+def public_header_owners(source: pathlib.Path, files: list[pathlib.Path], src: pathlib.Path,
+                         rank: dict[str, int]) -> dict[str, str]:
+    """collidescope/X.hpp -> the lowest folder of engine/src with a .cpp that includes it first."""
+    public = {f"collidescope/{p.name}" for p in (source / "engine" / "include" / "collidescope").glob("*.hpp")}
+    owners: dict[str, str] = {}
+    for path in files:
+        folder = path.relative_to(src).parts[0]
+        includes = INCLUDE.findall(path.read_text())
+        if path.suffix != ".cpp" or folder not in rank or not includes or includes[0] not in public:
+            continue
+        header = includes[0]
+        if header not in owners or rank[folder] < rank[owners[header]]:
+            owners[header] = folder
+    return owners
 
 
 def main() -> int:
@@ -61,6 +77,7 @@ def main() -> int:
         problems.append(f"docs/explanation/architecture.md's diagram names engine/src/{folder}/, which does not exist")
 
     files = sorted(p for p in src.rglob("*") if p.suffix in (".cpp", ".hpp"))
+    owners = public_header_owners(source, files, src, rank)
     for path in files:
         folder = path.relative_to(src).parts[0]
         if folder not in rank:
@@ -69,10 +86,10 @@ def main() -> int:
             target = include.split("/")[0]
             if target in rank and rank[target] > rank[folder]:
                 problems.append(f"{path.relative_to(source)}: includes \"{include}\", a layer above {folder}/")
-            owner = LAYERED_HEADERS.get(include)
+            owner = owners.get(include)
             if owner is not None and rank[folder] < rank[owner]:
-                problems.append(f"{path.relative_to(source)}: includes \"{include}\" (the {owner}/ layer's), "
-                                f"below {owner}/")
+                problems.append(f"{path.relative_to(source)}: includes \"{include}\" (implemented in {owner}/), "
+                                f"a layer above {folder}/")
     for problem in problems:
         print(problem)
     if not problems:

@@ -4,7 +4,7 @@
 
 #include "support/scene_builders.hpp"
 
-#include "common/object_level.hpp"
+#include "stages/object_level.hpp"
 
 #include <algorithm>
 #include <random>

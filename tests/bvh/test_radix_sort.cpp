@@ -24,7 +24,7 @@ std::vector<MortonKey> keys_of(std::size_t n, Draw code) {
 void expect_sorts_like_std_sort(std::vector<MortonKey> keys, const std::string& what) {
     std::vector<MortonKey> expected = keys;
     std::sort(expected.begin(), expected.end());  // by (code, id): what stability must give
-    // The builder's storage: past 1 MiB (65,536 keys), large blocks (common/large_blocks.hpp).
+    // The builder's storage: past 1 MiB (65,536 keys), large blocks (collidescope/large_blocks.hpp).
     LargeVector<MortonKey> sorted(keys.begin(), keys.end()), scratch;
     radix_sort(sorted, scratch);
     EXPECT_TRUE(std::ranges::equal(sorted, expected)) << what;

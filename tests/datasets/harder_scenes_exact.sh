@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# scripts/harder_scenes.py at its small size, as a user runs it: every scene it writes loads
+# bench/scripts/harder_scenes.py at its small size, as a user runs it: every scene it writes loads
 # through `collidescope check`, and `aabb` (at 1 and 2 threads) and `gpu` return exactly
 # `brute`'s pairs on every frame. rods and pile collide somewhere; wrinkled is near contact
 # without contact (folds close to each other, no pair touching): no pair on any frame, and on
@@ -11,7 +11,7 @@ cli=$1
 source_dir=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-/usr/bin/python3 "$source_dir/scripts/harder_scenes.py" "$work" --size small --frames 3
+/usr/bin/python3 "$source_dir/bench/scripts/harder_scenes.py" "$work" --size small --frames 3
 for scene in rods pile wrinkled; do
   "$cli" check "$work/$scene/scene.json" --method brute --pairs "$work/$scene.brute.tsv" --exit-zero -q
   for run in "aabb 1" "aabb 2" "gpu 2"; do

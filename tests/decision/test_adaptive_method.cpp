@@ -3,7 +3,7 @@
 // (every action, the rebuild in a thread), and determinism with a scripted clock.
 
 #include "methods/adaptive_method.hpp"
-#include "common/object_level.hpp"
+#include "stages/object_level.hpp"
 
 #include "support/brute_reference.hpp"
 #include "support/scene_builders.hpp"

@@ -32,6 +32,28 @@ run_step("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${tmp}/prefi
 if(NOT EXISTS ${tmp}/prefix/include/collidescope/session.hpp)
   message(FATAL_ERROR "install: no include/collidescope/session.hpp under ${tmp}/prefix")
 endif()
+# A small public surface (docs/reference/embedding.md): about ten headers, every one of them
+# self-contained within the install, and no GL, allocator or GPU-cull pass records in them.
+file(GLOB_RECURSE installed_headers RELATIVE ${tmp}/prefix/include ${tmp}/prefix/include/*.hpp)
+list(LENGTH installed_headers installed_count)
+if(installed_count GREATER 10)
+  message(FATAL_ERROR "install: ${installed_count} headers (${installed_headers}); the package shows at most 10")
+endif()
+foreach(header IN LISTS installed_headers)
+  file(STRINGS ${tmp}/prefix/include/${header} includes REGEX "^#include \"")
+  foreach(line IN LISTS includes)
+    string(REGEX REPLACE "^#include \"([^\"]+)\".*" "\\1" included "${line}")
+    if(NOT EXISTS ${tmp}/prefix/include/${included})
+      message(FATAL_ERROR "install: ${header} includes ${included}, which is not installed")
+    endif()
+  endforeach()
+  file(READ ${tmp}/prefix/include/${header} text)
+  foreach(word GpuPassInfo GlContext GlBackend LargeBlock)
+    if(text MATCHES "${word}")
+      message(FATAL_ERROR "install: ${header} names ${word}: plumbing in the public surface")
+    endif()
+  endforeach()
+endforeach()
 
 # The tutorial's loop, verbatim.
 set(tutorial docs/tutorials/embedding-loop.md)

@@ -5,8 +5,8 @@ minimised with `scripts/fuzz.sh merge`; this script says where it started.
 
     tests/fuzz/make_seeds.py OUT_DIR COLLIDESCOPE_BINARY
 
-writes OUT_DIR/{ply,obj,scene,trace,cache}/; the trace seeds are recordings made by the given
-`collidescope` binary from small meshes (the committed trace corpus is gzipped, see
+writes OUT_DIR/{ply,obj,scene,recording,cache}/; the recording seeds are recordings made by the given
+`collidescope` binary from small meshes (the committed recording corpus is gzipped, see
 scripts/fuzz.sh)."""
 
 import os
@@ -90,7 +90,7 @@ def record(binary, out, inputs, *options):
     subprocess.run([binary, "record", *inputs, "-o", out, "--threads", "1", "-q", *options], check=True)
 
 
-def traces(binary, directory):
+def recordings(binary, directory):
     """Recordings of two tetrahedra meeting over three frames (the second gains a triangle at
     frame 2: two topologies): the GPU cull with depth images, the hybrid method with
     self-collision, the AABB method and the decision system (its /frames/decision rows)."""
@@ -123,8 +123,8 @@ def main():
         write(f"{out}/scene/{name}.json", text)
     write(f"{out}/cache/tetra.pc2", pc2(tetra_frames(3)))
     write(f"{out}/cache/tetra.mdd", mdd(tetra_frames(2), [0.0, 1.0 / 24]))
-    os.makedirs(f"{out}/trace", exist_ok=True)
-    traces(binary, f"{out}/trace")
+    os.makedirs(f"{out}/recording", exist_ok=True)
+    recordings(binary, f"{out}/recording")
 
 
 if __name__ == "__main__":

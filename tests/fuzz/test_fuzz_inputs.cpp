@@ -80,7 +80,7 @@ TEST_P(Corpus, EveryInputReadsOrIsRejected) {
     EXPECT_GT(accepted, 0u) << "every corpus input of " << target << " was rejected";
 }
 
-INSTANTIATE_TEST_SUITE_P(Targets, Corpus, ::testing::Values("ply", "obj", "scene", "trace", "cache"));
+INSTANTIATE_TEST_SUITE_P(Targets, Corpus, ::testing::Values("ply", "obj", "scene", "recording", "cache"));
 
 // The seeds (tests/fuzz/make_seeds.py, run here with the built collidescope) are valid files
 // of every form each reader takes: every one must read, or the corpus starts from broken files.
@@ -91,7 +91,7 @@ TEST(Seeds, ValidFilesAreAccepted) {
                                 " " + COLLIDESCOPE_BIN + " >/dev/null";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
     std::size_t seeds = 0;
-    for (const char* target : {"ply", "obj", "scene", "trace", "cache"}) {
+    for (const char* target : {"ply", "obj", "scene", "recording", "cache"}) {
         for (const auto& file : std::filesystem::directory_iterator(out / target)) {
             SCOPED_TRACE(file.path().string());
             EXPECT_EQ(entry_named(target)(bytes_of(file.path())), Outcome::Accepted);
@@ -121,20 +121,20 @@ TEST(Regressions, PlyAsciiElementWithoutPropertiesDoesNotHang) {
 // inspect converted the mode to int (undefined behaviour UBSan reported) and replay would too.
 // The reader refuses a decision code that is no uint8.
 TEST(Regressions, TraceDecisionCodeOutOfRangeIsAnInputError) {
-    const std::filesystem::path gz = regression("trace/decision-mode-1e300.h5.gz");
-    EXPECT_EQ(read_trace(bytes_of(gz)), Outcome::Rejected);
+    const std::filesystem::path gz = regression("recording/decision-mode-1e300.h5.gz");
+    EXPECT_EQ(read_recording(bytes_of(gz)), Outcome::Rejected);
     const Unpacked file(gz);
     const recorder::Recording recording(file.path());
     EXPECT_THAT(input_error([&] { recording.frame_values("decision"); }),
                 HasSubstr("/frames/decision/mode: frame row 0 holds 1e+300, not a code 0..255"));
 }
 
-// fuzz_trace, 11 inputs in: an object header moved by an inserted run of bytes fails its
+// fuzz_recording, 11 inputs in: an object header moved by an inserted run of bytes fails its
 // checksum; libhdf5 1.10.8 leaks a metadata cache block on that path (fuzz/lsan.supp). What
-// our code must do: a clean InputError, and no HDF5 object left open (read_trace checks).
+// our code must do: a clean InputError, and no HDF5 object left open (read_recording checks).
 TEST(Regressions, TraceCorruptObjectHeaderIsAnInputError) {
-    const std::filesystem::path gz = regression("trace/hdf5-header-leak.h5.gz");
-    EXPECT_EQ(read_trace(bytes_of(gz)), Outcome::Rejected);
+    const std::filesystem::path gz = regression("recording/hdf5-header-leak.h5.gz");
+    EXPECT_EQ(read_recording(bytes_of(gz)), Outcome::Rejected);
     const Unpacked file(gz);
     EXPECT_THAT(input_error([&] { recorder::Recording recording(file.path()); }),
                 HasSubstr(file.path().string() + ": "));

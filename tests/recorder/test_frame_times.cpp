@@ -157,7 +157,7 @@ with collidescope.open("run.h5") as rec:
 with collidescope.open("plain.h5") as rec:
     assert rec.times is None and rec.stats["time"] is None and rec.fps is None and rec.up_axis is None
 import os
-script = os.path.join(os.environ["PYTHONPATH"].split(":")[1], "trace_plot_times.py")
+script = os.path.join(os.environ["PYTHONPATH"].split(":")[1], "recording_plot_times.py")
 for name in ("run.h5", "plain.h5"):
     print(subprocess.run([sys.executable, script, name, "-o", name + ".png"], check=True, capture_output=True,
                          text=True).stdout.strip())

@@ -1,9 +1,9 @@
-// Group commit (TraceFile::append of several frames, one append per dataset and one flush)
+// Group commit (RecordingWriter::append of several frames, one append per dataset and one flush)
 // against the obvious path, one frame per append: the two files hold the same datasets with
 // the same bytes, for frames that keep their vertex count and for frames that change it.
 
 #include "frame_copier.hpp"
-#include "trace_file.hpp"
+#include "recording_writer.hpp"
 
 #include "mesh/temp_files.hpp"
 #include "recording_helpers.hpp"
@@ -72,10 +72,10 @@ void write(const std::string& file, const Scene& scene, const std::vector<std::s
     session.method = "brute";
     session.frame_end = static_cast<std::uint32_t>(records.size());
     for (std::uint32_t k = 0; k < scene.source->object_count(); ++k) session.object_names.push_back(scene.source->object_name(k));
-    TraceFile trace(file, session, scene.source->frame(0), methods, 1);
+    RecordingWriter trace(file, session, scene.source->frame(0), methods, 1);
     for (std::size_t i = 0; i < records.size();) {
         const std::size_t n = std::min(batch(i), records.size() - i);
-        const std::vector<TraceFile::Keep> keeps(n);
+        const std::vector<RecordingWriter::Keep> keeps(n);
         trace.append(std::span(records).subspan(i, n), keeps);
         i += n;
     }
@@ -144,8 +144,8 @@ TEST(GroupCommit, AGroupThatDoesNotFitKeepsTheFramesThatDo) {
     std::string error;
     std::uint64_t written = 0;
     {
-        TraceFile trace(limited, session, scene.source->frame(0), sink.copier.methods(), 1);
-        trace.append(std::span(records).first(5), std::vector<TraceFile::Keep>(5));  // a first group that fits
+        RecordingWriter trace(limited, session, scene.source->frame(0), sink.copier.methods(), 1);
+        trace.append(std::span(records).first(5), std::vector<RecordingWriter::Keep>(5));  // a first group that fits
         const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
         rlimit old_limit{};
         getrlimit(RLIMIT_FSIZE, &old_limit);
@@ -153,7 +153,7 @@ TEST(GroupCommit, AGroupThatDoesNotFitKeepsTheFramesThatDo) {
         limit.rlim_cur = whole_bytes / 2;
         setrlimit(RLIMIT_FSIZE, &limit);
         try {
-            trace.append(std::span(records).subspan(5), std::vector<TraceFile::Keep>(35));  // one group: it does not fit
+            trace.append(std::span(records).subspan(5), std::vector<RecordingWriter::Keep>(35));  // one group: it does not fit
         } catch (const InputError& failure) {
             error = failure.what();
         }

@@ -109,7 +109,7 @@ TEST(RecorderRoundTrip, TopologyChangesAreRecordedFromTheirFrame) {
 }
 
 // Positions chunks hold the first frame's vertices; a frame with another vertex count fills
-// chunks partly, and the next frame rewrites the partial chunk whole (trace_file.cpp). Vertex
+// chunks partly, and the next frame rewrites the partial chunk whole (recording_writer.cpp). Vertex
 // counts drawn at random, above and below the first frame's, come back exactly.
 TEST(RecorderRoundTrip, PositionsOfEveryVertexCountComeBackExactly) {
     const std::uint64_t seed = 77;

@@ -1,4 +1,4 @@
-// The trace scripts in scripts/ (Debian's /usr/bin/python3 with h5py, numpy, matplotlib) on a
+// The recording scripts in scripts/ (Debian's /usr/bin/python3 with h5py, numpy, matplotlib) on a
 // small recording: pairs equal `check --pairs`, the plot is a PNG, the depth script says there
 // are no depth buffers, compare finds a planted difference.
 
@@ -50,18 +50,18 @@ protected:
 };
 
 TEST_F(TraceScripts, PairsEqualCheck) {
-    const ScriptResult pairs = run_script("trace_pairs.py", {"run.h5"}, m_dir);
+    const ScriptResult pairs = run_script("recording_pairs.py", {"run.h5"}, m_dir);
     ASSERT_EQ(pairs.exit_code, 0) << pairs.out;
     const testing::CliResult checked = run_cli({"check", "--scene", "demo:small", "--pairs", "-", "--exit-zero", "-q"}, m_dir.path());
     EXPECT_FALSE(checked.out.empty());
     EXPECT_EQ(pairs.out, checked.out);
-    const ScriptResult summary = run_script("trace_pairs.py", {"run.h5", "--summary", "--frames", "11:12"}, m_dir);
+    const ScriptResult summary = run_script("recording_pairs.py", {"run.h5", "--summary", "--frames", "11:12"}, m_dir);
     ASSERT_EQ(summary.exit_code, 0) << summary.out;
     EXPECT_EQ(summary.out.rfind("frame 11: ", 0), 0u) << summary.out;
 }
 
 TEST_F(TraceScripts, PlotWritesAPng) {
-    const ScriptResult plot = run_script("trace_plot_times.py", {"run.h5", "-o", "times.png"}, m_dir);
+    const ScriptResult plot = run_script("recording_plot_times.py", {"run.h5", "-o", "times.png"}, m_dir);
     ASSERT_EQ(plot.exit_code, 0) << plot.out;
     const std::string png = testing::read_text(m_dir.path() / "times.png");
     ASSERT_GT(png.size(), 1000u);
@@ -69,7 +69,7 @@ TEST_F(TraceScripts, PlotWritesAPng) {
 }
 
 TEST_F(TraceScripts, DepthSaysThereAreNone) {
-    const ScriptResult depth = run_script("trace_depth.py", {"run.h5"}, m_dir);
+    const ScriptResult depth = run_script("recording_depth.py", {"run.h5"}, m_dir);
     EXPECT_EQ(depth.exit_code, 0) << depth.out;
     EXPECT_NE(depth.out.find("no depth buffers in this recording"), std::string::npos) << depth.out;
 }
@@ -81,14 +81,14 @@ TEST_F(TraceScripts, DepthDrawsARecordedImage) {
                       m_dir.path())
                   .exit_code,
               0);
-    const ScriptResult depth = run_script("trace_depth.py", {"depth.h5", "--frame", "4", "-o", "depth.png"}, m_dir);
+    const ScriptResult depth = run_script("recording_depth.py", {"depth.h5", "--frame", "4", "-o", "depth.png"}, m_dir);
     ASSERT_EQ(depth.exit_code, 0) << depth.out;
     EXPECT_NE(depth.out.find("frame 4, image 0"), std::string::npos) << depth.out;
     EXPECT_NE(depth.out.find("input length unit"), std::string::npos) << depth.out;
     const std::string png = testing::read_text(m_dir.path() / "depth.png");
     ASSERT_GT(png.size(), 1000u);
     EXPECT_EQ(png.substr(1, 3), "PNG");
-    const ScriptResult none = run_script("trace_depth.py", {"depth.h5", "--frame", "1"}, m_dir);
+    const ScriptResult none = run_script("recording_depth.py", {"depth.h5", "--frame", "1"}, m_dir);
     EXPECT_EQ(none.exit_code, 1) << "frame 1 has no depth image: " << none.out;
 }
 
@@ -121,16 +121,16 @@ TEST_F(TraceScripts, CompareFindsAPlantedDifference) {
     args.insert(args.end(), patterns.begin(), patterns.end());
     ASSERT_EQ(run_cli(args, m_dir.path()).exit_code, 0);
 
-    const ScriptResult same = run_script("trace_compare.py", {"run.h5", "run.h5"}, m_dir);
+    const ScriptResult same = run_script("recording_compare.py", {"run.h5", "run.h5"}, m_dir);
     EXPECT_EQ(same.exit_code, 0) << same.out;
-    const ScriptResult differ = run_script("trace_compare.py", {"run.h5", "planted.h5"}, m_dir);
+    const ScriptResult differ = run_script("recording_compare.py", {"run.h5", "planted.h5"}, m_dir);
     EXPECT_EQ(differ.exit_code, 1) << differ.out;
     EXPECT_NE(differ.out.find("first difference at frame 13; 1 frames differ"), std::string::npos) << differ.out;
 }
 
 TEST_F(TraceScripts, RefuseAForeignFile) {
     testing::write_foreign_hdf5(m_dir.path() / "foreign.h5");
-    const ScriptResult pairs = run_script("trace_pairs.py", {"foreign.h5"}, m_dir);
+    const ScriptResult pairs = run_script("recording_pairs.py", {"foreign.h5"}, m_dir);
     EXPECT_NE(pairs.exit_code, 0);
     EXPECT_NE(pairs.out.find("not a collidescope recording"), std::string::npos) << pairs.out;
 }

@@ -23,14 +23,14 @@ __attribute__((visibility("default"))) const char* __ubsan_default_options() {
 // Two suppressions. One for Mesa's OSMesa (docs/how-to/sanitizers.md): it keeps a process-wide state
 // tracker manager (one 16-byte root) and the framebuffers OSMesaMakeCurrent creates for each
 // context (about 160 bytes per context) without ever freeing them, although we destroy every
-// context (gpucull/gl_context_osmesa.cpp, RAII). Mesa has no frame pointers, so the leak's
+// context (platform/src/gl_context_osmesa.cpp, RAII). Mesa has no frame pointers, so the leak's
 // stack ends inside libOSMesa and the library is the narrowest handle LSan offers. A context
 // wrapper we forgot to destroy is still reported: its own allocation is ours.
 //
-// And one for libhdf5 1.10.8, found by the trace fuzz target (docs/how-to/fuzzing.md): when an object
+// And one for libhdf5 1.10.8, found by the recording fuzz target (docs/how-to/fuzzing.md): when an object
 // header fails its checksum, HDF5 loses the metadata cache block it allocated for it (about
 // 200 bytes, under H5C_protect), memory it never hands to us. The regression input
-// (tests/fuzz/regressions/trace/hdf5-header-leak.h5.gz) runs in the suite. libhdf5 has no
+// (tests/fuzz/regressions/recording/hdf5-header-leak.h5.gz) runs in the suite. libhdf5 has no
 // frame pointers either, so the library is again the narrowest handle; an HDF5 id we forgot
 // to close stays reachable from HDF5's id tables and was never reported as a leak anyway.
 __attribute__((visibility("default"))) const char* __lsan_default_suppressions() {

@@ -1,4 +1,4 @@
-// A child with a planted memory error, for tests/common/test_sanitizer_report.cpp: the proof
+// A child with a planted memory error, for tests/harness/test_sanitizer_report.cpp: the proof
 // that a sanitizer report in a child the tests run fails the test that met it, whatever the
 // child's exit code.
 //   memory_error_canary clean          - exits 0, says nothing on stderr

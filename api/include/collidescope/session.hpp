@@ -17,7 +17,7 @@
 /// Not thread-safe: one thread drives a session; the engine parallelises inside step(). A
 /// moved-from session may only be destroyed or assigned to.
 
-#include "collidescope/stats.hpp"
+#include "collidescope/step_stats.hpp"
 #include "collidescope/vertex_view.hpp"
 
 #include "collidescope/export.hpp"
@@ -92,9 +92,11 @@ public:
     /// throw InputError naming the file and frame.
     std::span<const CollidingPair> step(std::span<const VertexView> positions);
 
-    /// The last step's stats (what `check --stats` reports; zero before the first step).
-    const FrameStats& stats() const;
-    /// The last step's stats as `check --stats` writes them: one JSON object, one line.
+    /// The last step's profile: its stage times and counts, as `check --stats` reports them
+    /// (zero before the first step).
+    const StepStats& stats() const;
+    /// The last step's stats as `check --stats` writes them, the methods' own parts included
+    /// (hierarchies, GPU cull, decision): one JSON object, one line.
     std::string stats_json() const;
     /// Frames stepped so far; the next frame's number.
     std::uint32_t frame_count() const;

@@ -1,5 +1,5 @@
 #pragma once
-/// What a frame's culling sees after the update and object level stages (engine/src/common):
+/// What a frame's culling sees after the update and object level stages (engine/src/stages):
 /// the frame, one box per object and the object pairs whose boxes overlap. The algorithms
 /// (bvh, gpucull, hybrid, brute) take it as input; the methods hand it on.
 

@@ -1,5 +1,5 @@
 #pragma once
-/// One frame's stats as the JSON object `check --stats` writes per line (engine/src/common).
+/// One frame's stats as the JSON object `check --stats` writes per line (engine/src/stats).
 ///
 /// The one serializer of FrameStats: `check --stats` writes it, the embedding facade
 /// (collidescope/session.hpp) and the Python module hand it out, so every consumer sees the

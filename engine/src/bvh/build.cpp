@@ -4,7 +4,7 @@
 #include "bvh/build_internal.hpp"
 #include "bvh/surface_patches.hpp"
 
-#include "common/stopwatch.hpp"
+#include "stats/stopwatch.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

@@ -3,7 +3,7 @@
 // private). The keys arrive in triangle order, so stability gives the triangle index as the
 // tie-break between equal codes, as `(code, id)` order does.
 
-#include "common/large_blocks.hpp"
+#include "collidescope/large_blocks.hpp"
 
 #include <cstdint>
 #include <vector>

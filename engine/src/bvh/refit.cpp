@@ -6,7 +6,7 @@
 #include "bvh/bvh.hpp"
 #include "bvh/surface_patches.hpp"
 
-#include "common/stopwatch.hpp"
+#include "stats/stopwatch.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

@@ -13,7 +13,7 @@
 namespace collidescope::bvh {
 
 /// A thread's candidate pairs during a traversal: a buffer of some megabytes, grown once and
-/// kept (TraversalBuffers), in large blocks (common/large_blocks.hpp) so that it is shared
+/// kept (TraversalBuffers), in large blocks (collidescope/large_blocks.hpp) so that it is shared
 /// among threads and pipelines instead of each thread's malloc arena touching memory anew.
 using CandidateBuffer = LargeVector<TrianglePair>;
 

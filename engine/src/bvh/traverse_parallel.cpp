@@ -5,7 +5,7 @@
 
 #include "bvh/traverse.hpp"
 
-#include "common/stopwatch.hpp"
+#include "stats/stopwatch.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>

@@ -10,7 +10,7 @@
 // the leaves' triangles are then tested on their double boxes, as the binary traversal does.
 // The candidates are exactly the binary traversal's.
 
-#include "common/large_blocks.hpp"
+#include "collidescope/large_blocks.hpp"
 
 #include <array>
 #include <bit>
@@ -20,7 +20,7 @@
 
 namespace collidescope::bvh {
 
-/// The trees' arrays: large ones in huge pages, kept for reuse (common/large_blocks.hpp).
+/// The trees' arrays: large ones in huge pages, kept for reuse (collidescope/large_blocks.hpp).
 using collidescope::detail::LargeVector;
 
 struct Tree;

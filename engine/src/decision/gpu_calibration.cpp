@@ -2,9 +2,9 @@
 
 #include "decision/gpu_calibration.hpp"
 
-#include "common/narrow_phase.hpp"
-#include "common/object_level.hpp"
-#include "common/stopwatch.hpp"
+#include "stages/narrow_phase.hpp"
+#include "stages/object_level.hpp"
+#include "stats/stopwatch.hpp"
 #include "gpucull/gpu_culler.hpp"
 #include "scene/file_source.hpp"
 

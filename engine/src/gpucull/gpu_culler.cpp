@@ -4,7 +4,7 @@
 #include "gpucull/gpu_culler.hpp"
 
 #include "gpucull/final_hierarchy.hpp"
-#include "common/stopwatch.hpp"
+#include "stats/stopwatch.hpp"
 
 #include <algorithm>
 #include <numeric>

@@ -3,7 +3,7 @@
 
 #include "gpucull/image_space_cull.hpp"
 
-#include "common/stopwatch.hpp"
+#include "stats/stopwatch.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -2,7 +2,7 @@
 
 #include "methods/aabb_method.hpp"
 
-#include "common/narrow_phase.hpp"
+#include "stages/narrow_phase.hpp"
 
 namespace collidescope {
 namespace {

@@ -4,7 +4,7 @@
 
 #include "bvh/aabb_culler.hpp"
 
-#include "collidescope/pipeline.hpp"
+#include "collidescope/method.hpp"
 
 #include <memory>
 

@@ -7,7 +7,7 @@
 
 #include "decision/policy.hpp"
 
-#include "collidescope/pipeline.hpp"
+#include "collidescope/method.hpp"
 
 #include <functional>
 #include <optional>

@@ -3,8 +3,8 @@
 #include "methods/brute_method.hpp"
 
 #include "brute/brute_cull.hpp"
-#include "common/narrow_phase.hpp"
-#include "common/stopwatch.hpp"
+#include "stages/narrow_phase.hpp"
+#include "stats/stopwatch.hpp"
 
 namespace collidescope {
 namespace {

@@ -2,7 +2,7 @@
 // The `brute` method (engine/src/methods): the brute-force culling (brute/brute_cull.hpp), then
 // the shared exact narrow phase. The oracle every other method is tested against.
 
-#include "collidescope/pipeline.hpp"
+#include "collidescope/method.hpp"
 
 #include <memory>
 

@@ -2,7 +2,7 @@
 
 #include "methods/gpu_method.hpp"
 
-#include "common/narrow_phase.hpp"
+#include "stages/narrow_phase.hpp"
 #include "gpucull/gpu_culler.hpp"
 
 namespace collidescope {

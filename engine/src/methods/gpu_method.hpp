@@ -3,7 +3,7 @@
 // (gpucull/gpu_culler.hpp), then the shared exact narrow phase.
 
 #include "collidescope/gpu_cull.hpp"
-#include "collidescope/pipeline.hpp"
+#include "collidescope/method.hpp"
 
 #include <memory>
 

@@ -2,7 +2,7 @@
 
 #include "methods/hybrid_method.hpp"
 
-#include "common/narrow_phase.hpp"
+#include "stages/narrow_phase.hpp"
 #include "hybrid/hybrid_culler.hpp"
 
 namespace collidescope {

@@ -6,7 +6,7 @@
 #include "bvh/aabb_culler.hpp"
 
 #include "collidescope/gpu_cull.hpp"
-#include "collidescope/pipeline.hpp"
+#include "collidescope/method.hpp"
 
 #include <memory>
 

@@ -2,8 +2,8 @@
 
 #include "collidescope/pipeline.hpp"
 
-#include "common/object_level.hpp"
-#include "common/stopwatch.hpp"
+#include "stages/object_level.hpp"
+#include "stats/stopwatch.hpp"
 
 #include <tbb/global_control.h>
 

@@ -17,7 +17,7 @@
 // an animated file (use --frames).
 
 #include "scene/animated_file.hpp"
-#include "scene/cached_object.hpp"
+#include "scene/mesh_with_point_cache.hpp"
 #include "scene/file_source.hpp"
 #include "scene/frame_pattern.hpp"
 
@@ -66,7 +66,7 @@ bool may_be_animated(const std::filesystem::path& path) {
 // A mesh file (static) or a frame pattern (one file per frame), named `name` or after the file.
 FileObject open_object(const std::string& spec, const std::string& name) {
     if (const std::optional<CacheSpec> cached = parse_cache_spec(spec)) {
-        return open_cached_object(cached->mesh, cached->cache, name);
+        return open_mesh_with_point_cache(cached->mesh, cached->cache, name);
     }
     FileObject object;
     object.origin = spec;
@@ -205,7 +205,7 @@ private:
         const std::string name = optional_string(entry, "name", path + ".name").value_or("");
         const std::filesystem::path spec = m_file.parent_path() / (pattern ? *pattern : *mesh);
         if (cache) {
-            FileObject object = open_cached_object(spec.string(), (m_file.parent_path() / *cache).string(), name);
+            FileObject object = open_mesh_with_point_cache(spec.string(), (m_file.parent_path() / *cache).string(), name);
             if (frames) use_frames(object, *frames);
             inputs.objects.push_back(std::move(object));
             return;

@@ -3,14 +3,14 @@
 /// frame number; per matched frame the pairs only in a and only in b; per stage the median and
 /// total milliseconds of each and their ratio b / a.
 
-#include "collidescope/recorder/reader.hpp"
-
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace collidescope::recorder {
+
+class Recording;  // reader.hpp
 
 struct FrameDifference {
     std::uint32_t frame = 0;        ///< scene frame number

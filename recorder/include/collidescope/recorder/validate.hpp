@@ -6,13 +6,13 @@
 /// positions one frame of the topology in force (or dropped), topologies from increasing
 /// frames with vertex indices in range, known methods, finite non-negative times.
 
-#include "collidescope/recorder/reader.hpp"
-
 #include <cstddef>
 #include <string>
 #include <vector>
 
 namespace collidescope::recorder {
+
+class Recording;  // reader.hpp
 
 struct ValidationReport {
     std::vector<std::string> problems;  ///< one line each, naming dataset and frame

@@ -78,7 +78,7 @@ struct ReplayOptions {
     /// outside are skipped. The default is every recorded frame.
     std::uint32_t frame_begin = 0;
     std::uint32_t frame_end = UINT32_MAX;
-    /// Frame-parallel replays (one process renders one block, app/ranks.hpp): render only the
+    /// Frame-parallel replays (one process renders one block, app/ranks/ranks.hpp): render only the
     /// replayed frames whose scene frame number lies in [part_begin, part_end), with everything
     /// that depends on all of them (the camera's bounds and orbit angle, the focus path, the
     /// frame's position on the timeline, the contact sheet's choice of frames) computed over the

@@ -1,0 +1,46 @@
+#pragma once
+/// What a recording holds besides its per-frame arrays: its objects and their topologies, a
+/// per-frame series, a virtual dataset's mappings (read by Recording, reader.hpp).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace collidescope::recorder {
+
+/// One topology of one object: triangles rows [first_row, first_row + triangle_count) of
+/// /objects/<k>/triangles, in force from scene frame `from_frame`.
+struct TopologyInfo {
+    std::uint32_t from_frame = 0;
+    std::uint32_t vertex_count = 0;
+    std::uint64_t first_row = 0;
+    std::uint64_t triangle_count = 0;
+};
+
+struct ObjectInfo {
+    std::string name;
+    std::vector<TopologyInfo> topologies;  ///< in order of from_frame
+};
+
+/// A per-frame series (one dataset of /frames/ms, /frames/counts or a /frames details group).
+template <class T>
+struct Series {
+    std::string name;
+    std::string unit;
+    std::vector<T> values;  ///< one per complete frame
+};
+
+/// One mapping of a virtual dataset (a virtual join, `join --virtual`, docs/how-to/mpi.md): rows
+/// [first, first + rows) of `dataset` are rows [source_first, source_first + rows) of
+/// `source_dataset` in the part file `file`.
+struct VirtualSource {
+    std::string dataset;
+    std::string file;            ///< as the mapping stores it (relative to the recording's directory)
+    std::string resolved;        ///< where it was found (HDF5's search: HDF5_VDS_PREFIX, then beside the recording)
+    std::string source_dataset;
+    std::uint64_t first = 0;
+    std::uint64_t rows = 0;
+    std::uint64_t source_first = 0;
+};
+
+}  // namespace collidescope::recorder
