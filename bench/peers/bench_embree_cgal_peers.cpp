@@ -15,7 +15,15 @@
 //
 //   build/bench/bench_embree_cgal_peers --scene cloth-rest:large [--self on|off|scene]
 //       [--frames 0,3,7 | --frames all] [--threads 1,2] [--no-fcl | --fcl-frames K]
-//       [--embree-build refit|low|medium] [--no-split]
+//       [--embree-build refit|low|medium] [--no-split] [--only aabb|peer|fcl]
+//
+// --only runs one side alone in this process, on the first --threads count, and prints its
+// ms and a digest of its pairs (FNV-1a over every timed frame's sorted pairs): the fair
+// comparison (bench/scripts/peers_fair.py) runs each side in a process of its own, in
+// alternating order, several times, and compares the digests. Every side runs on the same
+// number of threads: the engine under its thread limit, the peer's Embree builds under
+// Embree's `threads` setting and its CGAL narrow phase and FCL's object pairs under a
+// tbb::global_control of that many threads (without --only: the largest --threads count).
 //   build/bench/bench_embree_cgal_peers INPUT... [the same options]
 //       (your own scene: any inputs `collidescope check` takes, a scene.json manifest, frame
 //       patterns, mesh files with point caches; --self scene follows the manifest)
@@ -37,10 +45,14 @@
 #include "collidescope/pipeline.hpp"
 #include "collidescope/scene.hpp"
 
+#include <tbb/global_control.h>
+
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <numeric>
+#include <memory>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -63,6 +75,7 @@ struct Options {
     bool split = true;                     // --no-split: skip narrow_split
     std::size_t fcl_frames = 0;            // > 0: FCL on the first this many timed frames only
     std::uint64_t check_rule = 0;          // > 0: only compare the exact tests on this many pairs
+    std::string only;                      // "", aabb, peer or fcl: that side alone (see the top)
 };
 
 std::vector<std::uint32_t> parse_list(const std::string& text) {
@@ -101,6 +114,11 @@ Options parse(int argc, char** argv) {
         } else if (arg == "--no-split") options.split = false;
         else if (arg == "--fcl-frames") options.fcl_frames = std::stoul(value());
         else if (arg == "--check-rule") options.check_rule = std::stoull(value());
+        else if (arg == "--only") {
+            options.only = value();
+            if (options.only != "aabb" && options.only != "peer" && options.only != "fcl")
+                throw std::invalid_argument("--only: aabb, peer or fcl");
+        }
         else if (!arg.starts_with("--")) options.inputs.push_back(arg);
         else throw std::invalid_argument("unknown argument " + arg);
     }
@@ -114,6 +132,27 @@ std::vector<std::uint32_t> spread_frames(std::uint32_t count, std::uint32_t want
     for (std::uint32_t k = 0; k < wanted; ++k) out.push_back(count <= 1 ? 0 : k * (count - 1) / (wanted - 1));
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
+}
+
+/// FNV-1a over every frame's pairs, sorted and unique, frame after frame: equal digests, equal
+/// pairs on every timed frame (what the fair comparison's separate processes compare).
+std::uint64_t pairs_digest(const std::vector<PairSet>& frames) {
+    std::uint64_t hash = 1469598103934665603ull;
+    const auto mix = [&hash](std::uint64_t value) {
+        for (int byte = 0; byte < 8; ++byte) {
+            hash ^= (value >> (8 * byte)) & 0xFF;
+            hash *= 1099511628211ull;
+        }
+    };
+    for (PairSet pairs : frames) {
+        sort_unique(pairs);
+        mix(pairs.size());
+        for (const TrianglePair& p : pairs) {
+            mix((std::uint64_t{p.obj_a} << 32) | p.tri_a);
+            mix((std::uint64_t{p.obj_b} << 32) | p.tri_b);
+        }
+    }
+    return hash;
 }
 
 /// Means over the timed frames of one `aabb` run.
@@ -154,6 +193,14 @@ OursRun run_ours(const std::vector<Frame>& frames, bool self, int threads, std::
     return run;
 }
 
+/// The peer's TBB threads (its CGAL narrow phase, FCL's object pairs) limited to `threads`, as
+/// the engine's are under its thread limit; null (all hardware threads) for 0.
+std::unique_ptr<tbb::global_control> thread_limit(int threads) {
+    if (threads <= 0) return nullptr;
+    return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                 static_cast<std::size_t>(threads));
+}
+
 /// Means over the timed frames of the Embree + CGAL peer, and its differences from `exact`.
 struct PeerRun {
     double total_ms = 0, refit_ms = 0, collide_ms = 0, narrow_ms = 0, candidates = 0, colliding = 0;
@@ -165,8 +212,9 @@ std::vector<ObjectPair> object_pairs(const Frame& frame, bool self) {
 }
 
 PeerRun run_peer(const std::vector<Frame>& frames, bool self, const std::vector<PairSet>& exact,
-                 RTCBuildQuality quality) {
-    EmbreePeer embree(quality);
+                 RTCBuildQuality quality, int threads, std::vector<PairSet>* found = nullptr) {
+    const std::unique_ptr<tbb::global_control> limit = thread_limit(threads);
+    EmbreePeer embree(quality, threads);
     // Warm-up: a whole frame, as the engine's (it builds the trees and grows the threads'
     // candidate lists; with the trees alone, the first timed frame grew the lists in memory
     // never touched before, and the peer's mean collide time on C moved between 2.3 and 7 ms
@@ -192,9 +240,12 @@ PeerRun run_peer(const std::vector<Frame>& frames, bool self, const std::vector<
         sort_unique(unique);
         run.repeated += candidates.size() - unique.size();
         run.colliding += static_cast<double>(colliding.size());
-        const auto [extra, missed] = difference(std::move(colliding), exact[f]);
-        run.extra += extra;
-        run.missed += missed;
+        if (found != nullptr) found->push_back(colliding);
+        if (f < exact.size()) {
+            const auto [extra, missed] = difference(std::move(colliding), exact[f]);
+            run.extra += extra;
+            run.missed += missed;
+        }
     }
     const double n = static_cast<double>(frames.size());
     for (double* x : {&run.total_ms, &run.refit_ms, &run.collide_ms, &run.narrow_ms, &run.candidates, &run.colliding})
@@ -261,7 +312,9 @@ struct FclRun {
     std::size_t extra = 0, missed = 0;
 };
 
-FclRun run_fcl(const std::vector<Frame>& frames, const std::vector<PairSet>& exact, std::size_t count) {
+FclRun run_fcl(const std::vector<Frame>& frames, const std::vector<PairSet>& exact, std::size_t count, int threads,
+               std::vector<PairSet>* found = nullptr) {
+    const std::unique_ptr<tbb::global_control> limit = thread_limit(threads);
     FclPeer fcl_peer;
     fcl_peer.frame(frames.front(), object_pairs(frames.front(), false));  // warm-up
     FclRun run;
@@ -271,6 +324,8 @@ FclRun run_fcl(const std::vector<Frame>& frames, const std::vector<PairSet>& exa
         const PairSet pairs = fcl_peer.frame(frames[f], object_pairs(frames[f], false));
         run.total_ms += ms_since(start);
         run.pairs += static_cast<double>(pairs.size());
+        if (found != nullptr) found->push_back(pairs);
+        if (f >= exact.size()) continue;
         PairSet between;
         for (const TrianglePair& p : exact[f])
             if (p.obj_a != p.obj_b) between.push_back(p);
@@ -321,6 +376,42 @@ int check_rule(std::uint64_t pairs) {
     return differ == 0 ? 0 : 2;
 }
 
+/// --only: one side alone on options.threads.front() threads; one JSON line with its ms per
+/// timed frame (mean), its stage split and the digest of its pairs.
+int run_one_side(const Options& options, const std::string& scene_name, bool self,
+                 const std::vector<std::uint32_t>& indices, const std::vector<Frame>& frames, std::size_t triangles) {
+    const int threads = options.threads.front();
+    std::vector<PairSet> pairs;
+    std::string side;
+    if (options.only == "aabb") {
+        side = json_ours(run_ours(frames, self, threads, pairs));
+    } else if (options.only == "peer") {
+        const PeerRun r = run_peer(frames, self, {}, options.embree_quality, threads, &pairs);
+        char text[512];
+        std::snprintf(text, sizeof text,
+                      "{\"threads\": %d, \"ms\": %.3f, \"refit_ms\": %.3f, \"collide_ms\": %.3f, \"narrow_ms\": %.3f, "
+                      "\"embree_candidates\": %.0f, \"colliding\": %.0f, \"repeated\": %zu}",
+                      threads, r.total_ms, r.refit_ms, r.collide_ms, r.narrow_ms, r.candidates, r.colliding, r.repeated);
+        side = text;
+    } else {
+        if (frames.front().objects.size() < 2) throw std::invalid_argument("--only fcl: the scene has one object (FCL has no self-collision)");
+        const FclRun r = run_fcl(frames, {}, frames.size(), threads, &pairs);
+        char text[256];
+        std::snprintf(text, sizeof text, "{\"threads\": %d, \"ms\": %.3f, \"pairs\": %.0f, \"between_objects_only\": true}",
+                      threads, r.total_ms, r.pairs);
+        side = text;
+    }
+    std::string frame_list;
+    for (std::uint32_t f : indices) frame_list += (frame_list.empty() ? "" : ", ") + std::to_string(f);
+    const char* quality = options.embree_quality == RTC_BUILD_QUALITY_LOW ? "low"
+                          : options.embree_quality == RTC_BUILD_QUALITY_MEDIUM ? "medium" : "refit";
+    std::printf("{\"scene\": \"%s\", \"side\": \"%s\", \"embree_build\": \"%s\", \"self\": %s, \"triangles\": %zu, "
+                "\"frames\": [%s], \"run\": %s, \"digest\": \"%016llx\"}\n",
+                scene_name.c_str(), options.only.c_str(), quality, self ? "true" : "false", triangles, frame_list.c_str(),
+                side.c_str(), static_cast<unsigned long long>(pairs_digest(pairs)));
+    return 0;
+}
+
 int run(const Options& options) {
     if (options.check_rule > 0) return check_rule(options.check_rule);
     const Scene scene = options.inputs.empty() ? make_builtin_scene(options.scene) : open_inputs(options.inputs);
@@ -337,6 +428,8 @@ int run(const Options& options) {
     for (std::uint32_t f : indices) frames.push_back(scene.source->frame(f));
     for (const ObjectFrame& o : frames.front().objects) triangles += o.triangle_count();
 
+    if (!options.only.empty()) return run_one_side(options, scene_name, self, indices, frames, triangles);
+
     std::vector<PairSet> exact;
     std::vector<OursRun> ours;
     for (int threads : options.threads) {
@@ -345,13 +438,14 @@ int run(const Options& options) {
         if (exact.empty()) exact = std::move(pairs);
         else if (pairs != exact) std::cerr << "warning: aabb's pairs differ between thread counts\n";
     }
-    const PeerRun peer = run_peer(frames, self, exact, options.embree_quality);
+    const int peer_threads = *std::max_element(options.threads.begin(), options.threads.end());
+    const PeerRun peer = run_peer(frames, self, exact, options.embree_quality, peer_threads);
     const AdjacentSplit split = options.split ? split_adjacent(frames, self) : AdjacentSplit{};
     const bool has_objects = frames.front().objects.size() > 1;
     std::string fcl = "null";
     if (options.fcl && has_objects) {
         const std::size_t fcl_count = options.fcl_frames > 0 ? std::min(options.fcl_frames, frames.size()) : frames.size();
-        const FclRun r = run_fcl(frames, exact, fcl_count);
+        const FclRun r = run_fcl(frames, exact, fcl_count, peer_threads);
         char text[256];
         std::snprintf(text, sizeof text, "{\"frames\": %zu, \"ms\": %.3f, \"pairs\": %.0f, \"extra\": %zu, \"missed\": %zu}",
                       r.frames, r.total_ms, r.pairs, r.extra, r.missed);

@@ -17,6 +17,8 @@
 #include <array>
 #include <cmath>
 #include <span>
+#include <string>
+#include <vector>
 
 namespace collidescope::peers {
 
@@ -65,9 +67,12 @@ inline void embree_collide(void* user, RTCCollision* collisions, unsigned int co
 class EmbreePeer {
 public:
     /// `quality`: RTC_BUILD_QUALITY_REFIT (the default: refit every frame) or a build quality
-    /// (RTC_BUILD_QUALITY_LOW, MEDIUM: the tree is built again every frame).
-    explicit EmbreePeer(RTCBuildQuality quality = RTC_BUILD_QUALITY_REFIT)
-        : m_device(rtcNewDevice(nullptr)), m_quality(quality) {}
+    /// (RTC_BUILD_QUALITY_LOW, MEDIUM: the tree is built again every frame). `threads` > 0:
+    /// Embree's builds run on that many threads (its `threads` device setting), as the engine's
+    /// do under --threads; 0: all hardware threads.
+    explicit EmbreePeer(RTCBuildQuality quality = RTC_BUILD_QUALITY_REFIT, int threads = 0)
+        : m_device(rtcNewDevice(threads > 0 ? ("threads=" + std::to_string(threads)).c_str() : nullptr)),
+          m_quality(quality) {}
     ~EmbreePeer() {
         release();
         rtcReleaseDevice(m_device);

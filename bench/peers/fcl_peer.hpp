@@ -1,13 +1,17 @@
 #pragma once
 // The FCL 0.7 peer (bench/peers): one BVHModel<AABB> per object, refit bottom-up every frame,
-// exhaustive contacts between objects through FCL's own floating-point triangle test. FCL has
-// no self-collision, so (a, a) object pairs are skipped.
+// exhaustive contacts between objects through FCL's own floating-point triangle test, with no
+// contact points (enable_contact off: FCL then records each intersecting triangle pair and
+// computes nothing more, as the engine reports pairs only). Object pairs run in parallel on
+// TBB's threads (FCL's traversal of one pair is sequential). FCL has no self-collision, so
+// (a, a) object pairs are skipped: its figures are between objects only.
 
 #include "peers/peer_common.hpp"
 
 #include "collidescope/frame_context.hpp"
 
 #include <fcl/fcl.h>
+#include <tbb/parallel_for.h>
 
 #include <limits>
 #include <memory>
@@ -31,18 +35,24 @@ public:
             m_models[o]->endUpdateModel(true, true);  // refit, bottom-up
             m_objects[o]->computeAABB();
         }
-        PairSet pairs;
+        std::vector<ObjectPair> between;
         for (const ObjectPair& pair : object_pairs) {
-            if (pair.a == pair.b) continue;
-            fcl::CollisionRequestd request(std::numeric_limits<std::size_t>::max(), true);
-            request.num_max_contacts = std::numeric_limits<std::size_t>::max();  // exhaustive
+            if (pair.a != pair.b) between.push_back(pair);
+        }
+        std::vector<PairSet> found(between.size());
+        tbb::parallel_for(std::size_t{0}, between.size(), [&](std::size_t k) {
+            const ObjectPair& pair = between[k];
+            // Exhaustive, without contact points (the second argument: enable_contact).
+            fcl::CollisionRequestd request(std::numeric_limits<std::size_t>::max(), false);
             fcl::CollisionResultd result;
             fcl::collide(m_objects[pair.a].get(), m_objects[pair.b].get(), request, result);
             for (std::size_t i = 0; i < result.numContacts(); ++i) {
                 const fcl::Contactd& contact = result.getContact(i);
-                pairs.push_back({pair.a, static_cast<std::uint32_t>(contact.b1), pair.b, static_cast<std::uint32_t>(contact.b2)});
+                found[k].push_back({pair.a, static_cast<std::uint32_t>(contact.b1), pair.b, static_cast<std::uint32_t>(contact.b2)});
             }
-        }
+        });
+        PairSet pairs;
+        for (const PairSet& some : found) pairs.insert(pairs.end(), some.begin(), some.end());
         return pairs;
     }
 

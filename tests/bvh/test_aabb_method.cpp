@@ -120,6 +120,10 @@ TEST_P(ClothFamily, MatchesBruteOnEveryFrame) {
 
 INSTANTIATE_TEST_SUITE_P(SmallPreset, ClothFamily,
                          ::testing::Values("cloth-rest", "cloth-drape", "cloth-crumple", "cloth-slide"));
+// The contact family (issue 37): near contact at a small gap, and coplanar overlap.
+INSTANTIATE_TEST_SUITE_P(ContactFamily, ClothFamily,
+                         ::testing::Values("contact-layers", "contact-spheres", "contact-rods", "contact-rollers",
+                                           "coplanar-stack"));
 
 // Self-collision culling must not hide contact inside a flat or one-way patch: sheets folded
 // onto themselves, slit (lips touching by position only), pinched (two vertices at one point),

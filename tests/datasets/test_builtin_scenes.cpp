@@ -15,7 +15,8 @@ namespace {
 TEST(BuiltinScenes, RegistryListsTheDataSetsAndDemo) {
     EXPECT_EQ(builtin_scene_names(),
               (std::vector<std::string>{"A", "B", "C", "D", "E1", "E2", "E3", "E4", "demo",
-                                        "cloth-rest", "cloth-drape", "cloth-crumple", "cloth-slide"}));
+                                        "cloth-rest", "cloth-drape", "cloth-crumple", "cloth-slide", "contact-layers",
+                                        "contact-spheres", "contact-rods", "contact-rollers", "coplanar-stack"}));
     EXPECT_EQ(builtin_scene_presets("demo"), (std::vector<std::string>{"default", "small"}));
     EXPECT_EQ(builtin_scene_presets("C"), (std::vector<std::string>{"default", "small", "large"}));
 }

@@ -78,6 +78,38 @@ TEST(Predicates, MixedMagnitudes) {
     EXPECT_EQ(orient2d(a, b, d, 2), reference_orient2d(a, b, d, 2));
 }
 
+/// Extrusions (a tube's side meshed ring by ring, a wall): four points over two points of an
+/// axis-aligned projection are coplanar, decided by the shortcut without the exact path; and
+/// near-extrusions (one coordinate off by an ulp) keep their exact nonzero sign.
+TEST(Predicates, ExtrusionsAreCoplanarWithoutTheExactPath) {
+    const std::uint64_t seed = 20261127;
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    std::uniform_int_distribution<int> axis_of(0, 2), pick(0, 1);
+    int nonzero = 0;
+    for (int n = 0; n < 20000; ++n) {
+        const int axis = axis_of(rng), i = (axis + 1) % 3, j = (axis + 2) % 3;
+        const double p[2][2] = {{unit(rng), unit(rng)}, {unit(rng), unit(rng)}};
+        Vec3 points[4];
+        for (Vec3& point : points) {
+            const int which = pick(rng);
+            point[axis] = unit(rng);
+            point[i] = p[which][0];
+            point[j] = p[which][1];
+        }
+        const PredicateCounters before = predicate_counters();
+        ASSERT_EQ(orient3d(points[0], points[1], points[2], points[3]), 0) << "seed " << seed << " case " << n;
+        ASSERT_EQ(predicate_counters().exact, before.exact) << "seed " << seed << " case " << n;
+        // One coordinate moved off the plane by an ulp: the sign is the rationals'.
+        Vec3 moved = points[3];
+        moved[i] = std::nextafter(moved[i], 2.0);
+        const int expected = reference_orient3d(points[0], points[1], points[2], moved);
+        ASSERT_EQ(orient3d(points[0], points[1], points[2], moved), expected) << "seed " << seed << " case " << n;
+        nonzero += expected != 0;
+    }
+    EXPECT_GT(nonzero, 1000);
+}
+
 TEST(Predicates, CountersSeeFallbacks) {
     const PredicateCounters before = predicate_counters();
     const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);

@@ -35,9 +35,16 @@ constexpr char k_cloth_rest[] = "cloth-rest";
 constexpr char k_cloth_drape[] = "cloth-drape";
 constexpr char k_cloth_crumple[] = "cloth-crumple";
 constexpr char k_cloth_slide[] = "cloth-slide";
+template <const char* name>
+Scene make_contact(const std::string& preset) { return datasets::make_contact_scene(name, preset, k_dataset_seed); }
+constexpr char k_contact_layers[] = "contact-layers";
+constexpr char k_contact_spheres[] = "contact-spheres";
+constexpr char k_contact_rods[] = "contact-rods";
+constexpr char k_contact_rollers[] = "contact-rollers";
+constexpr char k_coplanar_stack[] = "coplanar-stack";
 
 // In the order builtin_scene_names() lists them: the thesis's data sets (chapter 5), the
-// demo, then the cloth family (issue 23). Aliases are listed by builtin_scene_names() too, after the canonical names.
+// demo, the cloth family (issue 23), then the contact family (issue 37). Aliases are listed by builtin_scene_names() too, after the canonical names.
 constexpr SceneEntry k_scenes[] = {
     {"A", &dataset_presets, &make_A},
     {"B", &dataset_presets, &make_B},
@@ -52,6 +59,11 @@ constexpr SceneEntry k_scenes[] = {
     {k_cloth_drape, &dataset_presets, &make_cloth<k_cloth_drape>},
     {k_cloth_crumple, &dataset_presets, &make_cloth<k_cloth_crumple>},
     {k_cloth_slide, &dataset_presets, &make_cloth<k_cloth_slide>},
+    {k_contact_layers, &dataset_presets, &make_contact<k_contact_layers>},
+    {k_contact_spheres, &dataset_presets, &make_contact<k_contact_spheres>},
+    {k_contact_rods, &dataset_presets, &make_contact<k_contact_rods>},
+    {k_contact_rollers, &dataset_presets, &make_contact<k_contact_rollers>},
+    {k_coplanar_stack, &dataset_presets, &make_contact<k_coplanar_stack>},
 };
 
 // Longer names for the data sets, resolved to the canonical ones.

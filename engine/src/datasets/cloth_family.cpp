@@ -21,6 +21,7 @@
 
 #include "datasets/generated_source.hpp"
 #include "datasets/generators.hpp"
+#include "datasets/shapes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -92,36 +93,10 @@ Scene make_rest(Preset preset, std::uint64_t seed) {
 
 constexpr double k_sphere_radius = 0.6;
 
-/// A closed UV sphere without pole singularities in its indexing: `rings` latitude rings of
-/// `segments` vertices (closed in longitude), plus one vertex at each pole with a fan.
-std::vector<TriIndices> sphere_triangles(std::uint32_t segments, std::uint32_t rings) {
-    std::vector<TriIndices> triangles;
-    const auto at = [segments](std::uint32_t i, std::uint32_t r) { return r * segments + i % segments; };
-    for (std::uint32_t r = 0; r + 1 < rings; ++r)
-        for (std::uint32_t i = 0; i < segments; ++i) {
-            triangles.push_back({at(i, r), at(i + 1, r), at(i + 1, r + 1)});
-            triangles.push_back({at(i, r), at(i + 1, r + 1), at(i, r + 1)});
-        }
-    const std::uint32_t south = rings * segments, north = south + 1;
-    for (std::uint32_t i = 0; i < segments; ++i) {
-        triangles.push_back({south, at(i + 1, 0), at(i, 0)});
-        triangles.push_back({north, at(i, rings - 1), at(i + 1, rings - 1)});
-    }
-    return triangles;
-}
-
+/// The drape's sphere: the unit sphere scaled to k_sphere_radius.
 void sphere_vertices(std::uint32_t segments, std::uint32_t rings, std::span<Vec3> out) {
-    for (std::uint32_t r = 0; r < rings; ++r) {
-        const double polar = k_pi * (r + 1) / (rings + 1);
-        for (std::uint32_t i = 0; i < segments; ++i) {
-            const double azimuth = 2 * k_pi * i / segments;
-            out[std::size_t{r} * segments + i] =
-                k_sphere_radius * Vec3(std::sin(polar) * std::cos(azimuth),
-                                       std::sin(polar) * std::sin(azimuth), -std::cos(polar));
-        }
-    }
-    out[std::size_t{rings} * segments] = Vec3(0, 0, -k_sphere_radius);
-    out[std::size_t{rings} * segments + 1] = Vec3(0, 0, k_sphere_radius);
+    unit_sphere_vertices(segments, rings, out);
+    for (Vec3& p : out) p *= k_sphere_radius;
 }
 
 /// Height of the draped cloth over (x, y) with the cloth `gap` above the sphere's top: on the

@@ -125,4 +125,10 @@ Scene make_scene_E(int speed, std::string_view preset, std::uint64_t seed);
 /// docs/reference/datasets.md; large >= 400k triangles). Throws InputError on a bad name or preset.
 Scene make_cloth_scene(std::string_view name, std::string_view preset, std::uint64_t seed);
 
+/// The contact family (contact_family.cpp has what each scene shows): `name` is
+/// contact-layers, contact-spheres, contact-rods, contact-rollers or coplanar-stack;
+/// self-collision on. Small: about a thousand triangles, 5 frames; default: 40k-100k, 20
+/// frames; large: 300k-470k, 8 frames.
+Scene make_contact_scene(std::string_view name, std::string_view preset, std::uint64_t seed);
+
 }  // namespace collidescope::datasets

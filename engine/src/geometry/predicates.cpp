@@ -95,6 +95,24 @@ bool exact_product(double x, double y, double& product) {
     return sign_of(s + t[2]);
 }
 
+/// True when the projections of a, b, c, d along `axis` (the other two coordinates) take at
+/// most two distinct values: the four points then lie on one plane parallel to the axis
+/// (through the line joining the two projected points, or any such plane when they coincide).
+bool extruded_along_axis(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, int axis) {
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    const auto same = [i, j](const Vec3& p, const Vec3& q) { return p[i] == q[i] && p[j] == q[j]; };
+    const Vec3* second = nullptr;  // the first point whose projection differs from a's
+    for (const Vec3* p : {&b, &c, &d}) {
+        if (same(*p, a)) continue;
+        if (second == nullptr) {
+            second = p;
+        } else if (!same(*p, *second)) {
+            return false;
+        }
+    }
+    return true;
+}
+
 /// orient2d's counterpart of orient3d_cheap: a repeated projected point gives 0; otherwise,
 /// with exact differences and both products exact, the rounded difference of the products
 /// has the exact sign.
@@ -249,6 +267,14 @@ int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
     // 0. The commonest exact zero on flat scenes, for nine comparisons.
     const auto zero_column = [&](int k) { return a[k] == d[k] && b[k] == d[k] && c[k] == d[k]; };
     if (zero_column(2) || zero_column(0) || zero_column(1)) {
+        ++t_counters.shortcut;
+        return 0;
+    }
+    // Four points over at most two points of an axis-aligned projection (an extrusion along
+    // that axis: the side of a tube or prism meshed ring by ring, a wall): they lie on a plane
+    // parallel to the axis, so the determinant is 0. Comparisons only.
+    if (extruded_along_axis(a, b, c, d, 0) || extruded_along_axis(a, b, c, d, 1) ||
+        extruded_along_axis(a, b, c, d, 2)) {
         ++t_counters.shortcut;
         return 0;
     }

@@ -1,0 +1,26 @@
+#pragma once
+// Meshes the generated scenes share (engine/src/datasets, private): a closed UV sphere and an
+// open tube, as topologies and as unit shapes to place per frame.
+
+#include "collidescope/types.hpp"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace collidescope::datasets {
+
+/// A closed UV sphere without pole singularities in its indexing: `rings` latitude rings of
+/// `segments` vertices (closed in longitude), plus one vertex at each pole with a fan.
+/// segments * rings + 2 vertices, 2 segments rings triangles.
+std::vector<TriIndices> sphere_triangles(std::uint32_t segments, std::uint32_t rings);
+
+/// The unit sphere's vertices in sphere_triangles' order (ring r at polar angle
+/// pi (r + 1) / (rings + 1) from the south pole; the south pole, then the north pole, last).
+void unit_sphere_vertices(std::uint32_t segments, std::uint32_t rings, std::span<Vec3> out);
+
+/// An open tube: `around` vertices per ring (closed around), `along` rings, ring k's vertices at
+/// indices k * around ... k * around + around - 1. 2 around (along - 1) triangles.
+std::vector<TriIndices> tube_triangles(std::uint32_t around, std::uint32_t along);
+
+}  // namespace collidescope::datasets
