@@ -1,5 +1,9 @@
 // Linear BVH build (Lauterbach et al. 2009, Karras 2012): 63-bit Morton codes of the
-// triangle centroids (21 bits per axis over the centroid bounds), radix-sorted with the
+// triangle centroids (21 bits per axis over a cube around the centroid bounds, so every axis
+// has cells of one size: with a cell size per axis, a long strip or a tall rod was split
+// across its short axes as often as along its length, into long thin nodes that overlapped
+// their neighbours; cloth-crumple:default's median frame took 14.8 ms against 2.3 ms with
+// the SAH builder, 2 threads), radix-sorted with the
 // triangle index as tie-break (so the order is unique and thread-independent), then split
 // top-down at the highest bit in which a range's first and last codes differ (a binary
 // search); equal codes split in the middle. Boxes come from the refit that follows.
@@ -33,11 +37,10 @@ std::uint64_t spread_bits(std::uint64_t x) {
 // The keys, sorted, in scratch.keys.
 void sort_codes(const BuildInput& input, LbvhScratch& scratch) {
     const Aabb& bounds = input.centroid_bounds;
-    std::array<double, 3> scale{};
-    for (int k = 0; k < 3; ++k) {
-        const double extent = bounds.hi[k] - bounds.lo[k];
-        scale[k] = extent > 0 ? static_cast<double>(k_cells) / extent : 0;
-    }
+    double largest = 0;
+    for (int k = 0; k < 3; ++k) largest = std::max(largest, bounds.hi[k] - bounds.lo[k]);
+    const double cube_scale = largest > 0 ? static_cast<double>(k_cells) / largest : 0;
+    const std::array<double, 3> scale = {cube_scale, cube_scale, cube_scale};
     LargeVector<MortonKey>& keys = scratch.keys;
     keys.resize(input.centroids.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, keys.size(), 4096),
