@@ -112,4 +112,10 @@ CollisionCount count_collisions(const Frame& frame, bool self_collision) {
     return count;
 }
 
+std::uint64_t triangle_count(const Frame& frame) {
+    std::uint64_t triangles = 0;
+    for (const ObjectFrame& object : frame.objects) triangles += object.triangle_count();
+    return triangles;
+}
+
 }  // namespace collidescope::testing

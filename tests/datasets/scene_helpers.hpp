@@ -26,6 +26,9 @@ void use_source_tree_data();
 std::optional<Scene> try_make_scene(std::string_view name, std::string_view preset,
                                     std::uint64_t seed, std::string& why);
 
+/// Triangles of a frame, every object.
+std::uint64_t triangle_count(const Frame& frame);
+
 /// FNV-1a over a frame's topologies (triangles, vertex counts) and the bits of its vertices.
 std::uint64_t hash_frame(const Frame& frame, std::uint64_t hash = 0xCBF29CE484222325ULL);
 

@@ -12,12 +12,6 @@
 namespace collidescope::testing {
 namespace {
 
-std::uint64_t triangle_count(const Frame& frame) {
-    std::uint64_t triangles = 0;
-    for (const ObjectFrame& object : frame.objects) triangles += object.triangle_count();
-    return triangles;
-}
-
 /// Colliding pairs per frame (self-collision on, as the scenes say), printed on one line.
 std::vector<std::uint64_t> colliding_per_frame(const Scene& scene) {
     std::vector<std::uint64_t> colliding;

@@ -13,12 +13,6 @@
 namespace collidescope::testing {
 namespace {
 
-std::uint64_t triangle_count(const Frame& frame) {
-    std::uint64_t triangles = 0;
-    for (const ObjectFrame& object : frame.objects) triangles += object.triangle_count();
-    return triangles;
-}
-
 /// The all-pairs counts of every frame (self-collision on, as the scenes say), printed.
 std::vector<CollisionCount> counts_per_frame(const Scene& scene) {
     std::vector<CollisionCount> counts;

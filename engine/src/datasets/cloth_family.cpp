@@ -37,19 +37,10 @@ double smoothstep(double edge0, double edge1, double x) {
     return s * s * (3 - 2 * s);
 }
 
-/// Coordinate i of n evenly spaced values over [lo, hi].
-double lerp_grid(std::uint32_t i, std::uint32_t n, double lo, double hi) {
-    return lo + (hi - lo) * static_cast<double>(i) / (n - 1);
-}
-
 /// p turned by `angle` about the z axis; z is copied, so a plane z = const stays exact.
 Vec3 turn_about_z(const Vec3& p, double angle) {
     const double c = std::cos(angle), s = std::sin(angle);
     return {c * p.x() - s * p.y(), s * p.x() + c * p.y(), p.z()};
-}
-
-double frame_time(std::uint32_t frame, std::uint32_t frames) {
-    return frames > 1 ? static_cast<double>(frame) / (frames - 1) : 0.0;
 }
 
 GeneratedObject grid_object(std::string name, std::uint32_t columns, std::uint32_t rows,
@@ -59,10 +50,6 @@ GeneratedObject grid_object(std::string name, std::uint32_t columns, std::uint32
     object.phases = {{0, make_topology(grid_triangles(columns, rows), columns * rows)}};
     object.vertices = std::move(vertices);
     return object;
-}
-
-std::uint32_t pick(Preset preset, std::uint32_t small, std::uint32_t normal, std::uint32_t large) {
-    return preset == Preset::Small ? small : preset == Preset::Default ? normal : large;
 }
 
 Scene finish(const char* name, Preset preset, std::uint64_t seed,

@@ -39,18 +39,6 @@ namespace {
 
 constexpr double k_pi = std::numbers::pi;
 
-double frame_time(std::uint32_t frame, std::uint32_t frames) {
-    return frames > 1 ? static_cast<double>(frame) / (frames - 1) : 0.0;
-}
-
-double lerp_grid(std::uint32_t i, std::uint32_t n, double lo, double hi) {
-    return lo + (hi - lo) * static_cast<double>(i) / (n - 1);
-}
-
-std::uint32_t pick(Preset preset, std::uint32_t small, std::uint32_t normal, std::uint32_t large) {
-    return preset == Preset::Small ? small : preset == Preset::Default ? normal : large;
-}
-
 std::uint32_t frames_of(Preset preset) { return pick(preset, 5, 20, 8); }
 
 Scene finish(const char* name, Preset preset, std::uint64_t seed, std::vector<GeneratedObject> objects,

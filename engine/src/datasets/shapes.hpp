@@ -1,6 +1,9 @@
 #pragma once
-// Meshes the generated scenes share (engine/src/datasets, private): a closed UV sphere and an
-// open tube, as topologies and as unit shapes to place per frame.
+// What the generated scenes share (engine/src/datasets, private): a closed UV sphere and an
+// open tube, as topologies and as unit shapes to place per frame; the time and grid helpers
+// of the cloth and contact families.
+
+#include "datasets/generators.hpp"
 
 #include "collidescope/types.hpp"
 
@@ -9,6 +12,21 @@
 #include <vector>
 
 namespace collidescope::datasets {
+
+/// Frame `frame` of `frames` as a time in [0, 1] (0 for a single frame).
+inline double frame_time(std::uint32_t frame, std::uint32_t frames) {
+    return frames > 1 ? static_cast<double>(frame) / (frames - 1) : 0.0;
+}
+
+/// Coordinate i of n evenly spaced values over [lo, hi].
+inline double lerp_grid(std::uint32_t i, std::uint32_t n, double lo, double hi) {
+    return lo + (hi - lo) * static_cast<double>(i) / (n - 1);
+}
+
+/// The preset's choice among three sizes.
+inline std::uint32_t pick(Preset preset, std::uint32_t small, std::uint32_t normal, std::uint32_t large) {
+    return preset == Preset::Small ? small : preset == Preset::Default ? normal : large;
+}
 
 /// A closed UV sphere without pole singularities in its indexing: `rings` latitude rings of
 /// `segments` vertices (closed in longitude), plus one vertex at each pole with a fan.
