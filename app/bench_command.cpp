@@ -91,7 +91,7 @@ void write_reports(const std::filesystem::path& directory, const std::vector<Ben
                    const std::vector<BenchSummary>& rows, const BenchOptions& options) {
     write_frames_csv(directory / "frames.csv", results);
     write_summary_csv(directory / "summary.csv", rows);
-    for (const BenchScene& scene : results) write_text_file(directory / plot_file_name(scene), plot_svg(scene));
+    draw_plots(directory);
     write_index_html(directory / "index.html", results, rows, settings_line(options));
 }
 
@@ -164,7 +164,8 @@ Command add_bench_command(CLI::App& app) {
     command->footer(
         "Writes DIR/frames.csv (per scene, method and frame: every stage's ms and every count),\n"
         "DIR/summary.csv (per scene and method: median and total ms, ratio to the fastest),\n"
-        "DIR/time_<scene>_<preset>.svg (time per frame per method) and DIR/index.html; prints the\n"
+        "DIR/time_<scene>_<preset>.svg (time per frame per method, drawn by plot_bench.py with\n"
+        "Debian's python3-matplotlib) and DIR/index.html; prints the\n"
         "summary table on stdout. Each frame's time is the median over --repeat runs of the whole\n"
         "animation (fresh pipelines each run; each method runs the animation alone, one method after\n"
         "another). Frames are generated before the clock starts.\n"

@@ -1,4 +1,4 @@
-// bench's CSV files, table and index page (the SVG plot is in bench_plot.cpp).
+// bench's CSV files, table and index page (bench_plot.cpp runs the plotting script).
 
 #include "bench_report.hpp"
 
@@ -46,6 +46,13 @@ BenchSummary summarize_method(const BenchScene& scene, const std::string& method
         row.median_ms = n % 2 == 1 ? totals[n / 2] : 0.5 * (totals[n / 2 - 1] + totals[n / 2]);
     }
     return row;
+}
+
+// The decision system's choice on an adaptive method's frame, as plot_bench.py reads it.
+const char* decision_name(const BenchFrame& frame) {
+    if (frame.mode == 0) return "";
+    if (frame.mode == 2) return "mode 2";
+    return frame.action == k_action_hybrid ? "hybrid" : "mode 1";
 }
 
 }  // namespace
@@ -98,13 +105,13 @@ void write_frames_csv(const std::filesystem::path& file, const std::vector<Bench
     out << "scene,preset,method,frame";
     for (const std::string& name : stage_names()) out << ",ms_" << name;
     for (const std::string& name : count_names()) out << ',' << name;
-    out << '\n';
+    out << ",triangles,decision\n";
     for (const BenchScene& scene : scenes) {
         for (const BenchFrame& frame : scene.frames) {
             out << scene.name << ',' << scene.preset << ',' << frame.method << ',' << frame.frame;
             for (const double ms : frame.ms) out << ',' << fixed(ms, 4);
             for (const std::uint64_t count : frame.counts) out << ',' << count;
-            out << '\n';
+            out << ',' << scene.triangles << ',' << decision_name(frame) << '\n';
         }
     }
     write_text_file(file, out.str());

@@ -1,7 +1,7 @@
 #pragma once
 // `collidescope bench`, the reporting part: frames.csv, summary.csv, the printed table, one
 // SVG plot of time per frame per method for each scene (in the style of the thesis's Figures
-// 5.6-5.13) and an index.html that shows them.
+// 5.6-5.13, drawn by bench/scripts/plot_bench.py) and an index.html that shows them.
 
 #include "bench_run.hpp"
 
@@ -37,7 +37,9 @@ inline bool is_adaptive_method(const std::string& method) { return method.rfind(
 /// Summaries of every scene and method, in run order.
 std::vector<BenchSummary> summarize(const std::vector<BenchScene>& scenes);
 
-/// frames.csv: scene, preset, method, frame, every stage's ms (`ms_<stage>`), every count.
+/// frames.csv: scene, preset, method, frame, every stage's ms (`ms_<stage>`), every count, the
+/// scene's triangles and the adaptive methods' decision ("mode 1", "hybrid", "mode 2"; empty
+/// for the fixed methods).
 void write_frames_csv(const std::filesystem::path& file, const std::vector<BenchScene>& scenes);
 
 /// summary.csv: one row per BenchSummary.
@@ -51,8 +53,9 @@ void print_table(std::ostream& out, const std::vector<BenchSummary>& rows);
 /// many frames Inequality 4.16 predicted the winner of hybrid against aabb. "" when none.
 std::string hybrid_analysis(const std::vector<BenchScene>& scenes);
 
-/// An SVG line chart of the per-frame total time of each method on one scene.
-std::string plot_svg(const BenchScene& scene);
+/// Draws every scene's plot from directory/frames.csv with bench/scripts/plot_bench.py
+/// (matplotlib, run by /usr/bin/python3); throws InputError when it cannot.
+void draw_plots(const std::filesystem::path& directory);
 
 /// The file name of a scene's plot: "time_<scene>_<preset>.svg".
 std::string plot_file_name(const BenchScene& scene);

@@ -4,6 +4,7 @@
 #include "support/cli_runner.hpp"
 #include "mesh/temp_files.hpp"
 
+#include "bench_report.hpp"
 #include "bench_run.hpp"
 
 #include "collidescope/datasets.hpp"
@@ -118,12 +119,27 @@ TEST(Bench, TwoSmallScenesProduceEveryFile) {
     EXPECT_EQ(line_count(read_text(out / "summary.csv")), 1 + 2 * methods);
     for (const char* plot : {"time_C_small.svg", "time_D_small.svg"}) {
         const std::string svg = read_text(out / plot);
-        EXPECT_NE(svg.find("<polyline"), std::string::npos) << plot;
+        EXPECT_NE(svg.find("id=\"line2d_"), std::string::npos) << plot;  // a method's line (matplotlib)
+        EXPECT_NE(svg.find(">aabb</text>"), std::string::npos) << plot;  // its legend entry
         EXPECT_NE(read_text(out / "index.html").find(plot), std::string::npos) << plot;
     }
     EXPECT_NE(result.out.find("C:small"), std::string::npos) << result.out;
     EXPECT_NE(result.out.find("D:small"), std::string::npos) << result.out;
     EXPECT_NE(result.err.find("identical pairs"), std::string::npos) << result.err;
+}
+
+// The plotting script refuses a frames.csv it cannot read with one line naming the file, and
+// bench reports that as an error (the CSVs stay).
+TEST(Bench, PlotsOfAnUnreadableFramesFileFailWithTheFileNamed) {
+    TempDir dir;
+    std::ofstream(dir.path() / "frames.csv") << "scene,preset,method,frame\nC,small,aabb,0\n";
+    try {
+        app::draw_plots(dir.path());
+        FAIL() << "no error";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("drawing the plots failed"), std::string::npos) << error.what();
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "time_C_small.svg"));
 }
 
 TEST(Bench, BruteIsSkippedOnLargerPresetsUnlessNamed) {
