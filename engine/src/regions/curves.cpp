@@ -1,0 +1,95 @@
+// Segments to curves: a graph whose nodes are the segment ends' keys and whose edges are the
+// segments, walked from every node that is not a simple joint (degree 2), then around what is
+// left, which can only be loops.
+
+#include "curves.hpp"
+
+#include <algorithm>
+
+namespace collidescope::regions {
+namespace {
+
+struct Incidence {
+    std::uint32_t segment;  ///< index into the region's segments
+    std::uint32_t end;      ///< 0 or 1
+};
+
+struct Graph {
+    std::vector<const Piece*> segments;
+    std::vector<std::array<std::uint32_t, 2>> nodes_of;  ///< per segment, the node of each end
+    std::vector<std::vector<Incidence>> incident;        ///< per node
+};
+
+Graph build_graph(std::span<const Piece> pieces, std::span<const std::uint32_t> indices) {
+    Graph graph;
+    struct Entry {
+        EndKey key;
+        std::uint32_t segment, end;
+    };
+    std::vector<Entry> entries;
+    for (const std::uint32_t index : indices) {
+        const Piece& piece = pieces[index];
+        if (piece.kind != PairIntersection::Kind::Segment) continue;
+        const auto segment = static_cast<std::uint32_t>(graph.segments.size());
+        graph.segments.push_back(&piece);
+        for (std::uint32_t end = 0; end < 2; ++end) entries.push_back({piece.keys[end], segment, end});
+    }
+    std::sort(entries.begin(), entries.end(),
+              [](const Entry& x, const Entry& y) { return x.key < y.key; });
+    graph.nodes_of.resize(graph.segments.size());
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        // A key without a feature joins nothing: a node of its own.
+        const bool same = i > 0 && entries[i].key.valid && entries[i].key == entries[i - 1].key;
+        if (!same) graph.incident.emplace_back();
+        const auto node = static_cast<std::uint32_t>(graph.incident.size() - 1);
+        graph.incident.back().push_back({entries[i].segment, entries[i].end});
+        graph.nodes_of[entries[i].segment][entries[i].end] = node;
+    }
+    return graph;
+}
+
+// Walks from `node` along `segment` until a node that is not a joint of two, or back to `node`.
+IntersectionCurve walk(const Graph& graph, std::uint32_t node, Incidence first, std::vector<bool>& used) {
+    IntersectionCurve curve;
+    curve.points.push_back(graph.segments[first.segment]->ends[first.end]);
+    Incidence step = first;
+    const std::uint32_t start = node;
+    for (;;) {
+        used[step.segment] = true;
+        const Piece& piece = *graph.segments[step.segment];
+        const std::uint32_t far = 1 - step.end;
+        curve.length += (piece.ends[far] - piece.ends[step.end]).norm();
+        const std::uint32_t next_node = graph.nodes_of[step.segment][far];
+        const auto& around = graph.incident[next_node];
+        if (next_node == start && around.size() == 2) {
+            curve.closed = true;
+            break;
+        }
+        curve.points.push_back(piece.ends[far]);
+        if (around.size() != 2) break;
+        const Incidence next = around[0].segment == step.segment && around[0].end == far ? around[1] : around[0];
+        if (used[next.segment]) break;
+        step = next;
+    }
+    return curve;
+}
+
+}  // namespace
+
+std::vector<IntersectionCurve> chain_curves(std::span<const Piece> pieces, std::span<const std::uint32_t> indices) {
+    const Graph graph = build_graph(pieces, indices);
+    std::vector<bool> used(graph.segments.size(), false);
+    std::vector<IntersectionCurve> curves;
+    for (std::uint32_t node = 0; node < graph.incident.size(); ++node) {
+        if (graph.incident[node].size() == 2) continue;
+        for (const Incidence& incidence : graph.incident[node]) {
+            if (!used[incidence.segment]) curves.push_back(walk(graph, node, incidence, used));
+        }
+    }
+    for (std::uint32_t segment = 0; segment < graph.segments.size(); ++segment) {
+        if (!used[segment]) curves.push_back(walk(graph, graph.nodes_of[segment][0], {segment, 0}, used));
+    }
+    return curves;
+}
+
+}  // namespace collidescope::regions

@@ -1,0 +1,254 @@
+// The intersection of two colliding triangles. The signs that decide its shape (which
+// vertices lie on which side of the other triangle's plane, and whether the two are coplanar)
+// come from the exact orient3d; the points are then constructed in double: where an edge
+// crosses the other plane, by its two vertices' distances to it; along the line both planes
+// share, the overlap of the two triangles' spans. Coplanar triangles: the first clipped by the
+// second in the plane they share (Sutherland-Hodgman), in the projection that drops the axis
+// of the larger normal component.
+
+#include "pair_intersection.hpp"
+
+#include "edge_crossing.hpp"
+
+#include "collidescope/geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace collidescope::regions {
+namespace {
+
+using Triangle = std::array<Vec3, 3>;
+using Kind = PairIntersection::Kind;
+
+// One end candidate: a point on the line both planes share, the features it lies on, and
+// whether it lies in the other (closed) triangle, decided exactly.
+struct End {
+    Vec3 point;
+    EndKey key;
+    bool inside = false;
+};
+
+struct Located {
+    Feature feature;
+    bool inside = false;  ///< in the closed triangle: the signs are not mixed
+};
+
+EndKey make_key(Feature x, Feature y) {
+    if (y < x) std::swap(x, y);
+    return {x, y, true};
+}
+
+// The feature of triangle `face` (corners `c`, vertex ids `ids`, triangle `tri` of `object`)
+// that a point lies on, from the three signs of the point against its edges (edge m from
+// corner m to corner m + 1; 0: on that edge's line): the face, an edge or a vertex.
+Located locate(const std::array<int, 3>& on_edge, const TriIndices& ids, std::uint32_t object, std::uint32_t tri) {
+    const bool positive = on_edge[0] > 0 || on_edge[1] > 0 || on_edge[2] > 0;
+    const bool negative = on_edge[0] < 0 || on_edge[1] < 0 || on_edge[2] < 0;
+    const bool inside = !(positive && negative);
+    const int zeros = (on_edge[0] == 0) + (on_edge[1] == 0) + (on_edge[2] == 0);
+    if (zeros == 1) {
+        const int m = on_edge[0] == 0 ? 0 : on_edge[1] == 0 ? 1 : 2;
+        const std::uint32_t u = ids[m], v = ids[(m + 1) % 3];
+        return {{object, Feature::Edge, std::min(u, v), std::max(u, v)}, inside};
+    }
+    if (zeros == 2) {  // on two edges' lines: their shared corner
+        // Edges 0 (c0 c1), 1 (c1 c2) and 2 (c2 c0): the two zero ones share this corner.
+        const int corner = on_edge[0] != 0 ? 2 : on_edge[1] != 0 ? 0 : 1;
+        return {{object, Feature::Vertex, ids[corner], ids[corner]}, inside};
+    }
+    return {{object, Feature::Face, tri, 0}, inside};  // inside, or a flat face (every sign 0)
+}
+
+// Which feature of `face` the edge (p, q) crosses it at: signs of (p, q) against each edge.
+Located crossed_feature(const Vec3& p, const Vec3& q, const Triangle& face, const TriIndices& ids, std::uint32_t object,
+                        std::uint32_t tri) {
+    return locate({orient3d(p, q, face[0], face[1]), orient3d(p, q, face[1], face[2]), orient3d(p, q, face[2], face[0])},
+                  ids, object, tri);
+}
+
+// Which feature of `face` a point in its plane lies on, in the projection that drops the
+// axis of the face's largest normal component.
+Located point_feature(const Vec3& point, const Triangle& face, const TriIndices& ids, std::uint32_t object,
+                      std::uint32_t tri) {
+    int drop = 0;
+    (face[1] - face[0]).cross(face[2] - face[0]).cwiseAbs().maxCoeff(&drop);
+    return locate({orient2d(face[0], face[1], point, drop), orient2d(face[1], face[2], point, drop),
+                   orient2d(face[2], face[0], point, drop)},
+                  ids, object, tri);
+}
+
+// One side of a pair: triangle `t` (vertex ids `ids`, of `object`) against the plane of
+// `other` (ids `other_ids`, triangle `other_tri` of `other_object`).
+struct Side {
+    const Triangle& t;
+    const TriIndices& ids;
+    std::uint32_t object;
+    const Triangle& other;
+    const TriIndices& other_ids;
+    std::uint32_t other_object;
+    std::uint32_t other_tri;
+};
+
+// Where side.t meets the plane of side.other: one or two points, with `sides` the exact signs
+// of t's vertices against that plane (not all zero).
+int plane_crossings(const Side& side, const std::array<int, 3>& sides, std::array<End, 3>& out) {
+    const Triangle& t = side.t;
+    int count = 0;
+    for (int i = 0; i < 3; ++i) {
+        if (sides[i] != 0) continue;
+        const Located there = point_feature(t[i], side.other, side.other_ids, side.other_object, side.other_tri);
+        out[count++] = {t[i], make_key({side.object, Feature::Vertex, side.ids[i], side.ids[i]}, there.feature),
+                        there.inside};
+    }
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3;
+        if (sides[i] * sides[j] >= 0) continue;  // no strict crossing of this edge
+        const double s = crossing_parameter(t[i], t[j], side.other);
+        const Feature edge{side.object, Feature::Edge, std::min(side.ids[i], side.ids[j]), std::max(side.ids[i], side.ids[j])};
+        const Located there = crossed_feature(t[i], t[j], side.other, side.other_ids, side.other_object, side.other_tri);
+        out[count++] = {t[i] + s * (t[j] - t[i]), make_key(edge, there.feature), there.inside};
+    }
+    return count;
+}
+
+// The span of `ends` (1 or 2) along `direction`: the lower and upper end.
+std::pair<End, End> span(const std::array<End, 3>& ends, int count, const Vec3& direction) {
+    if (count == 1) return {ends[0], ends[0]};
+    return direction.dot(ends[0].point) <= direction.dot(ends[1].point) ? std::pair{ends[0], ends[1]}
+                                                                         : std::pair{ends[1], ends[0]};
+}
+
+Piece crossing(const Triangle& a, const TriIndices& ia, const Triangle& b, const TriIndices& ib,
+               const TrianglePair& pair, const std::array<int, 3>& sa, const std::array<int, 3>& sb,
+               std::vector<Vec3>* polygon) {
+    std::array<End, 3> on_a{}, on_b{};
+    const int na = plane_crossings({a, ia, pair.obj_a, b, ib, pair.obj_b, pair.tri_b}, sa, on_a);
+    const int nb = plane_crossings({b, ib, pair.obj_b, a, ia, pair.obj_a, pair.tri_a}, sb, on_b);
+    if (na == 0 || nb == 0) {  // not a colliding pair after all (a caller's mistake): a corner
+        Piece piece;
+        piece.ends = {a[0], a[0]};
+        if (polygon) polygon->assign(1, a[0]);
+        return piece;
+    }
+    Vec3 direction = (a[1] - a[0]).cross(a[2] - a[0]).cross((b[1] - b[0]).cross(b[2] - b[0]));
+    if (!(direction.squaredNorm() > 0)) direction = na == 2 ? on_a[1].point - on_a[0].point : Vec3(1, 0, 0);
+    // The segment's ends are the span ends that lie in the other triangle (exactly decided):
+    // normally two, one where they touch at a point; one key where several coincide.
+    std::array<End, 6> ends{};
+    int count = 0;
+    for (int i = 0; i < na + nb; ++i) {
+        const End& end = i < na ? on_a[i] : on_b[i - na];
+        if (!end.inside) continue;
+        bool seen = false;
+        for (int k = 0; k < count; ++k) seen = seen || ends[k].key == end.key;
+        if (!seen) ends[count++] = end;
+    }
+    Piece piece;
+    if (count == 0) {
+        // Only rounding can leave no end (a nearly flat triangle's located features): the
+        // overlap of the two spans, in double.
+        const auto [a_lo, a_hi] = span(on_a, na, direction);
+        const auto [b_lo, b_hi] = span(on_b, nb, direction);
+        ends[0] = direction.dot(a_lo.point) >= direction.dot(b_lo.point) ? a_lo : b_lo;
+        ends[1] = direction.dot(a_hi.point) <= direction.dot(b_hi.point) ? a_hi : b_hi;
+        count = ends[0].key == ends[1].key ? 1 : 2;
+    } else if (count > 2) {
+        // More than two distinct features (a degenerate pair): the two outermost along the line.
+        const auto by_position = [&](const End& x, const End& y) { return direction.dot(x.point) < direction.dot(y.point); };
+        const auto [lo, hi] = std::minmax_element(ends.begin(), ends.begin() + count, by_position);
+        ends = {*lo, *hi};
+        count = 2;
+    }
+    if (count == 1) {
+        piece.ends = {ends[0].point, ends[0].point};
+    } else {
+        // A segment joins two features even when it rounds to no length (a curve passing
+        // within an ulp of a vertex crosses two of its edges there): it keeps the chain whole.
+        piece.kind = Kind::Segment;
+        piece.ends = {ends[0].point, ends[1].point};
+        piece.keys = {ends[0].key, ends[1].key};
+    }
+    if (polygon) {
+        polygon->assign(piece.ends.begin(), piece.ends.begin() + (piece.kind == Kind::Segment ? 2 : 1));
+    }
+    return piece;
+}
+
+// Coplanar triangles: a clipped by b in their shared plane.
+Piece coplanar(const Triangle& a, const Triangle& b, std::vector<Vec3>* polygon) {
+    const Vec3 na = (a[1] - a[0]).cross(a[2] - a[0]);
+    const Vec3 nb = (b[1] - b[0]).cross(b[2] - b[0]);
+    const Vec3 normal = na.squaredNorm() >= nb.squaredNorm() ? na : nb;
+    int drop = 0;
+    normal.cwiseAbs().maxCoeff(&drop);
+    const int u = (drop + 1) % 3, v = (drop + 2) % 3;
+    const auto cross2 = [&](const Vec3& p, const Vec3& q, const Vec3& r) {
+        return (q[u] - p[u]) * (r[v] - p[v]) - (q[v] - p[v]) * (r[u] - p[u]);
+    };
+    const double orientation = cross2(b[0], b[1], b[2]) >= 0 ? 1.0 : -1.0;
+    std::vector<Vec3> clipped(a.begin(), a.end()), next;
+    for (int e = 0; e < 3 && !clipped.empty(); ++e) {
+        const Vec3& p = b[e];
+        const Vec3& q = b[(e + 1) % 3];
+        next.clear();
+        for (std::size_t i = 0; i < clipped.size(); ++i) {
+            const Vec3& s = clipped[i];
+            const Vec3& t = clipped[(i + 1) % clipped.size()];
+            const double ds = orientation * cross2(p, q, s);
+            const double dt = orientation * cross2(p, q, t);
+            if (ds >= 0) next.push_back(s);
+            if ((ds >= 0) != (dt >= 0) && ds != dt) next.push_back(s + (ds / (ds - dt)) * (t - s));
+        }
+        clipped.swap(next);
+    }
+    // Rounding or a degenerate triangle can clip everything away from a pair the exact test
+    // found touching: keep the nearest corner of a.
+    if (clipped.empty()) clipped.push_back(a[0]);
+    Piece piece;
+    Vec3 twice_area = Vec3::Zero();
+    for (std::size_t i = 0; i < clipped.size(); ++i) twice_area += clipped[i].cross(clipped[(i + 1) % clipped.size()]);
+    piece.area = clipped.size() >= 3 ? 0.5 * twice_area.norm() : 0.0;
+    piece.kind = clipped.size() >= 3 ? Kind::Polygon : clipped.size() == 2 ? Kind::Segment : Kind::Point;
+    Eigen::AlignedBox3d box;
+    for (const Vec3& point : clipped) box.extend(point);
+    piece.ends = {box.min(), box.max()};
+    if (piece.kind != Kind::Polygon) piece.ends = {clipped.front(), clipped.back()};
+    if (polygon) *polygon = clipped;
+    return piece;
+}
+
+std::array<int, 3> sides(const Triangle& plane, const Triangle& t) {
+    return {orient3d(plane[0], plane[1], plane[2], t[0]), orient3d(plane[0], plane[1], plane[2], t[1]),
+            orient3d(plane[0], plane[1], plane[2], t[2])};
+}
+
+}  // namespace
+
+Piece intersect(const Frame& frame, const TrianglePair& pair, std::vector<Vec3>* polygon) {
+    const ObjectFrame& object_a = frame.objects[pair.obj_a];
+    const ObjectFrame& object_b = frame.objects[pair.obj_b];
+    const Triangle a = object_a.corners(pair.tri_a);
+    const Triangle b = object_b.corners(pair.tri_b);
+    const std::array<int, 3> sa = sides(b, a);
+    const std::array<int, 3> sb = sides(a, b);
+    const bool flat_a = sa == std::array<int, 3>{0, 0, 0};
+    const bool flat_b = sb == std::array<int, 3>{0, 0, 0};
+    if (flat_a || flat_b) return coplanar(a, b, polygon);
+    return crossing(a, object_a.topology->triangles[pair.tri_a], b, object_b.topology->triangles[pair.tri_b], pair, sa,
+                    sb, polygon);
+}
+
+}  // namespace collidescope::regions
+
+namespace collidescope {
+
+PairIntersection intersect_pair(const Frame& frame, const TrianglePair& pair) {
+    PairIntersection result;
+    const regions::Piece piece = regions::intersect(frame, pair, &result.points);
+    result.kind = piece.kind;
+    result.area = piece.area;
+    return result;
+}
+
+}  // namespace collidescope

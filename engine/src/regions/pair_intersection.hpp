@@ -1,0 +1,54 @@
+#pragma once
+// One colliding pair's intersection (engine/src/regions, private): the segment, point or
+// coplanar polygon, with what each end of a segment lies on, so that segments chain into curves
+// by what they cross rather than by rounded coordinates.
+
+#include "collidescope/regions.hpp"
+
+#include <array>
+#include <cstdint>
+
+namespace collidescope::regions {
+
+/// A vertex, edge or face of one object: kind Vertex (a), Edge (a < b: vertex ids) or Face
+/// (a: triangle id).
+struct Feature {
+    enum Kind : std::uint8_t { Vertex, Edge, Face };
+    std::uint32_t object = 0;
+    std::uint8_t kind = Vertex;
+    std::uint32_t a = 0;
+    std::uint32_t b = 0;
+
+    friend bool operator==(const Feature&, const Feature&) = default;
+    friend auto operator<=>(const Feature&, const Feature&) = default;
+};
+
+/// Where a segment's end lies: on a feature of each surface (an edge of one crossing the face of
+/// the other, or, where the crossing falls exactly on an edge or vertex of that face, that edge
+/// or vertex), the two in canonical order. Located with exact predicates, so every pair whose
+/// segment ends there computes the same key: two segments of a curve meet at equal keys, also
+/// where a curve passes exactly through an edge-edge crossing or a vertex. `valid` false: an
+/// end of no feature (rounding put it between), which chains with nothing.
+struct EndKey {
+    Feature first;
+    Feature second;
+    bool valid = false;
+
+    friend bool operator==(const EndKey&, const EndKey&) = default;
+    friend auto operator<=>(const EndKey&, const EndKey&) = default;
+};
+
+/// The compact form find_regions keeps per pair: a point, a segment with its ends' keys, or a
+/// coplanar polygon by its area and box.
+struct Piece {
+    PairIntersection::Kind kind = PairIntersection::Kind::Point;
+    std::array<Vec3, 2> ends;      ///< Point: ends[0]; Segment: both; Polygon: the box's min and max
+    std::array<EndKey, 2> keys;    ///< Segment only
+    double area = 0;               ///< Polygon only
+};
+
+/// The intersection of `pair`'s triangles in `frame`; `polygon` receives a coplanar
+/// polygon's corners (or a point or segment's points) when not null.
+Piece intersect(const Frame& frame, const TrianglePair& pair, std::vector<Vec3>* polygon = nullptr);
+
+}  // namespace collidescope::regions

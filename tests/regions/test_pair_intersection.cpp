@@ -1,0 +1,77 @@
+// intersect_pair on random pairs biased toward contact (grazing, coplanar, on-a-grid, nearly
+// degenerate): every point it returns lies on both triangles, within rounding of the
+// coordinates; a coplanar overlap's area is at most either triangle's.
+
+#include "support/random_triangles.hpp"
+#include "support/scene_builders.hpp"
+
+#include "collidescope/geometry.hpp"
+#include "collidescope/regions.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+namespace collidescope {
+namespace {
+
+// The distance from p to the closed triangle (a, b, c) (Ericson, Real-Time Collision
+// Detection, 5.1.5), for triangles of non-zero area.
+double distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 ab = b - a, ac = c - a, ap = p - a;
+    const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+    if (d1 <= 0 && d2 <= 0) return (p - a).norm();
+    const Vec3 bp = p - b;
+    const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+    if (d3 >= 0 && d4 <= d3) return (p - b).norm();
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return (p - (a + d1 / (d1 - d3) * ab)).norm();
+    const Vec3 cp = p - c;
+    const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+    if (d6 >= 0 && d5 <= d6) return (p - c).norm();
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return (p - (a + d2 / (d2 - d6) * ac)).norm();
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) return (p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).norm();
+    const double denominator = 1 / (va + vb + vc);
+    return (p - (a + ab * vb * denominator + ac * vc * denominator)).norm();
+}
+
+double area(const std::array<Vec3, 3>& t) { return 0.5 * (t[1] - t[0]).cross(t[2] - t[0]).norm(); }
+
+TEST(PairIntersection, EveryPointLiesOnBothTrianglesOnRandomContactPairs) {
+    const std::uint64_t seed = 20261127;
+    std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
+    std::mt19937_64 rng(seed);
+    std::uint32_t tested = 0, segments = 0, polygons = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const testing::TrianglePairCase c = testing::random_near_contact_pair(rng);
+        if (!triangles_intersect(c.a[0], c.a[1], c.a[2], c.b[0], c.b[1], c.b[2])) continue;
+        const Frame frame = testing::make_frame({MeshData{{c.a.begin(), c.a.end()}, {{0, 1, 2}}},
+                                                 MeshData{{c.b.begin(), c.b.end()}, {{0, 1, 2}}}});
+        const PairIntersection cut = intersect_pair(frame, {0, 0, 1, 0});
+        ASSERT_FALSE(cut.points.empty()) << testing::describe(c.a, c.b);
+        for (const Vec3& p : cut.points) ASSERT_TRUE(p.allFinite()) << testing::describe(c.a, c.b);
+        ++tested;
+        segments += cut.kind == PairIntersection::Kind::Segment;
+        polygons += cut.kind == PairIntersection::Kind::Polygon;
+        if (area(c.a) == 0 || area(c.b) == 0) continue;  // a segment or point: no distance to a face
+        double scale = 1;
+        for (const Vec3& v : c.a) scale = std::max(scale, v.cwiseAbs().maxCoeff());
+        for (const Vec3& v : c.b) scale = std::max(scale, v.cwiseAbs().maxCoeff());
+        const double tolerance = 1e-9 * scale;
+        for (const Vec3& p : cut.points) {
+            EXPECT_LE(distance_to_triangle(p, c.a[0], c.a[1], c.a[2]), tolerance) << int(cut.kind) << " n=" << cut.points.size() << " p=" << p.transpose() << " " << c.kind << ' ' << testing::describe(c.a, c.b);
+            EXPECT_LE(distance_to_triangle(p, c.b[0], c.b[1], c.b[2]), tolerance) << c.kind << ' ' << testing::describe(c.a, c.b);
+        }
+        if (cut.kind == PairIntersection::Kind::Polygon) {
+            EXPECT_LE(cut.area, std::min(area(c.a), area(c.b)) * (1 + 1e-9)) << testing::describe(c.a, c.b);
+        }
+    }
+    std::printf("%u intersecting pairs: %u segments, %u coplanar polygons\n", tested, segments, polygons);
+    EXPECT_GT(segments, 1000u);
+    EXPECT_GT(polygons, 100u);
+}
+
+}  // namespace
+}  // namespace collidescope
