@@ -1,6 +1,7 @@
 // `collidescope check`: runs a scene's frames through a method and reports the colliding
 // triangle pairs (summary on stderr, --pairs TSV, --stats JSON Lines, exit code).
 
+#include "check_regions.hpp"
 #include "check_sinks.hpp"
 #include "commands.hpp"
 #include "engine_cli_options.hpp"
@@ -30,6 +31,7 @@ struct CheckOptions {
     std::string frames;           ///< "" = every frame
     std::string pairs;            ///< TSV output ("" = none, "-" = stdout)
     std::string stats;            ///< JSON Lines output ("" = none, "-" = stdout)
+    std::string regions;          ///< regions as JSON Lines ("" = none, "-" = stdout)
     bool exit_zero = false;
     bool quiet = false;
     EngineOptions engine;           ///< --method, --self, --threads, --gpu-*, --aabb-*
@@ -43,6 +45,10 @@ Outputs (FILE may be - for stdout; logs and progress always go to stderr):
            numbered from 0 in input order, triangles from 0 in file order, each pair once
            with (objA,triA) < (objB,triB), lines sorted numerically.
   --stats  JSON Lines, one object per frame: {"frame", "method", "ms": {...}, "counts": {...}}.
+  --regions  JSON Lines, one object per interpenetration region per frame: {"frame", "region"
+           (an id that follows the region over frames), "objects", "names", "pairs", "triangles",
+           "loops", "curve_length", "coplanar_area", "box", "predecessors", "curves": [{"closed",
+           "length", "points"}]}; then a line per region on stderr (docs/explanation/regions.md).
   A file output is written as FILE.partial, flushed after every frame, and renamed to FILE
   when the run completes: an interrupted run leaves only FILE.partial.
 SIGINT or SIGTERM stops after the current frame (a second one at once) and says how many
@@ -99,9 +105,25 @@ std::string interrupted_line(int signal, const FrameRange& range, std::uint32_t 
     return line;
 }
 
+// A line per region over the run, the first k_region_lines of them (all are in the file).
+void log_region_lines(Progress& progress, const RegionsWriter& writer, bool quiet, const std::string& where) {
+    constexpr std::size_t k_region_lines = 20;
+    if (quiet) return;
+    const std::vector<std::string> lines = writer.summary_lines();
+    for (std::size_t i = 0; i < lines.size() && i < k_region_lines; ++i) progress.log(lines[i]);
+    if (lines.size() > k_region_lines) {
+        progress.log("... and " + std::to_string(lines.size() - k_region_lines) + " more regions (every one in " +
+                     where + ")");
+    }
+    progress.log(std::to_string(lines.size()) + " regions over the run");
+}
+
 int run_check(const CheckOptions& options) {
-    if (options.pairs == "-" && options.stats == "-") {
-        throw InputError("--pairs and --stats cannot both write to stdout (-)");
+    if ((options.pairs == "-") + (options.stats == "-") + (options.regions == "-") > 1) {
+        throw InputError("--pairs, --stats and --regions: only one of them can write to stdout (-)");
+    }
+    if (!options.regions.empty() && ranks::parallel()) {
+        throw InputError("--regions follows regions from frame to frame, so it runs in one process: run it without mpirun");
     }
     const auto start = std::chrono::steady_clock::now();
     const Scene scene = open_scene(options.inputs, options.scene, options.engine.animation);
@@ -117,11 +139,18 @@ int run_check(const CheckOptions& options) {
     std::optional<OutputStream> stats_out;
     std::optional<PairsWriter> pairs_writer;
     std::optional<StatsWriter> stats_writer;
+    std::optional<OutputStream> regions_out;
+    std::optional<RegionsWriter> regions_writer;
     if (!options.pairs.empty()) {
         pipeline.add_sink(pairs_writer.emplace(pairs_out.emplace(ranks::text_output(options.pairs)).stream()));
     }
     if (!options.stats.empty()) {
         pipeline.add_sink(stats_writer.emplace(stats_out.emplace(ranks::text_output(options.stats)).stream()));
+    }
+    if (!options.regions.empty()) {
+        std::vector<std::string> names;
+        for (std::uint32_t i = 0; i < scene.source->object_count(); ++i) names.push_back(scene.source->object_name(i));
+        pipeline.add_sink(regions_writer.emplace(regions_out.emplace(options.regions).stream(), std::move(names)));
     }
 
     // The first frame is read (and validated) before anything is printed, so bad input in a
@@ -135,6 +164,7 @@ int run_check(const CheckOptions& options) {
         // Every finished frame reaches the disk: a killed run keeps it in the .partial file.
         if (pairs_out) pairs_out->end_frame(f);
         if (stats_out) stats_out->end_frame(f);
+        if (regions_out) regions_out->end_frame(f);
         progress.advance();
         if (++f == range.end || interrupt.signal() != 0) break;
         frame = scene.source->frame(ranks::at_frame(f));
@@ -143,14 +173,18 @@ int run_check(const CheckOptions& options) {
     if (interrupt.signal() != 0) {
         if (pairs_out) pairs_out->finish_partial();
         if (stats_out) stats_out->finish_partial();
+        if (regions_out) regions_out->finish_partial();
         log_total_line(progress, summary, start);
         progress.log(interrupted_line(interrupt.signal(), range, f,
                                       {pairs_out ? location(*pairs_out, options.pairs) : std::string(),
-                                       stats_out ? location(*stats_out, options.stats) : std::string()}));
+                                       stats_out ? location(*stats_out, options.stats) : std::string(),
+                                       regions_out ? regions_out->location() : std::string()}));
         return interrupted_exit_code(interrupt.signal());
     }
     if (pairs_out) pairs_out->finish();
     if (stats_out) stats_out->finish();
+    if (regions_out) regions_out->finish();
+    if (regions_writer) log_region_lines(progress, *regions_writer, options.quiet, regions_out->location());
     log_total_line(progress, summary, start);
     return summary.colliding_pairs() > 0 && !options.exit_zero ? 1 : 0;
 }
@@ -176,6 +210,9 @@ Command add_check_command(CLI::App& app) {
     check->add_option("--pairs", options->pairs, "Write the colliding pairs as TSV (- = stdout)")
         ->type_name("FILE");
     check->add_option("--stats", options->stats, "Write per-frame stats as JSON Lines (- = stdout)")
+        ->type_name("FILE");
+    check->add_option("--regions", options->regions,
+                      "Write the interpenetration regions (curves, ids over frames) as JSON Lines (- = stdout)")
         ->type_name("FILE");
     check->add_flag("--exit-zero", options->exit_zero, "Exit 0 even when collisions are found");
     check->add_flag("-q,--quiet", options->quiet, "Only the total line on stderr, no per-frame lines");

@@ -7,6 +7,7 @@
 
 #include "collidescope/geometry.hpp"
 #include "collidescope/regions.hpp"
+#include "regions/pair_intersection.hpp"
 
 #include <gtest/gtest.h>
 
@@ -71,6 +72,39 @@ TEST(PairIntersection, EveryPointLiesOnBothTrianglesOnRandomContactPairs) {
     std::printf("%u intersecting pairs: %u segments, %u coplanar polygons\n", tested, segments, polygons);
     EXPECT_GT(segments, 1000u);
     EXPECT_GT(polygons, 100u);
+}
+
+// The generic fast path (four edge-edge orientations) against the general path (every end
+// located on the other triangle) on random crossing pairs: the same ends, the same keys.
+TEST(PairIntersection, FastPathEqualsTheGeneralPath) {
+    const std::uint64_t seed = 38;
+    std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> coordinate(-1, 1);
+    const auto random_triangle = [&] {
+        std::vector<Vec3> corners;
+        for (int k = 0; k < 3; ++k) corners.emplace_back(coordinate(rng), coordinate(rng), coordinate(rng));
+        return corners;
+    };
+    std::uint32_t compared = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const std::vector<Vec3> a = random_triangle(), b = random_triangle();
+        if (!triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2])) continue;
+        const Frame frame = testing::make_frame({MeshData{a, {{0, 1, 2}}}, MeshData{b, {{0, 1, 2}}}});
+        const regions::Piece fast = regions::intersect(frame, {0, 0, 1, 0}, nullptr, true);
+        const regions::Piece general = regions::intersect(frame, {0, 0, 1, 0}, nullptr, false);
+        ASSERT_EQ(fast.kind, general.kind) << i;
+        if (fast.kind != PairIntersection::Kind::Segment) continue;
+        // The same two ends, in either order.
+        const bool swapped = !(fast.keys[0] == general.keys[0]);
+        const int f0 = swapped ? 1 : 0;
+        EXPECT_TRUE(fast.keys[f0] == general.keys[0] && fast.keys[1 - f0] == general.keys[1]) << i;
+        EXPECT_LE((fast.ends[f0] - general.ends[0]).norm(), 1e-12) << i;
+        EXPECT_LE((fast.ends[1 - f0] - general.ends[1]).norm(), 1e-12) << i;
+        ++compared;
+    }
+    std::printf("%u crossing pairs compared\n", compared);
+    EXPECT_GT(compared, 1000u);
 }
 
 }  // namespace

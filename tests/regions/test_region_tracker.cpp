@@ -30,7 +30,7 @@ TEST(RegionTracker, SplitAndMergeAreRecorded) {
     std::vector<std::vector<Region>> frames;
     for (const double z : {-0.6, -0.46, -0.36, -0.46, -0.6}) {
         Step s = step(ring, plane_at(z, 3.0, 30));
-        tracker.update(static_cast<std::uint32_t>(frames.size()), s.pairs, s.regions);
+        tracker.update(static_cast<std::uint32_t>(frames.size()), s.regions);
         frames.push_back(std::move(s.regions));
     }
     ASSERT_EQ(frames[0].size(), 0u);
@@ -66,7 +66,7 @@ TEST(RegionTracker, AMovingContactKeepsItsIdAndItsLargestLength) {
     std::vector<double> lengths;
     for (std::uint32_t f = 0; f < 6; ++f) {
         Step s = step(fixed, sphere(29, 15, Vec3(1.9 - 0.15 * f, 0.01 * f, 0.02), 1.0));
-        tracker.update(f, s.pairs, s.regions);
+        tracker.update(f, s.regions);
         ASSERT_EQ(s.regions.size(), 1u) << f;
         EXPECT_EQ(s.regions[0].id, 1u) << f;
         lengths.push_back(s.regions[0].curve_length);
@@ -86,8 +86,8 @@ TEST(RegionTracker, AGapStartsNewTracks) {
     RegionTracker tracker;
     const MeshData fixed = sphere(24, 12, Vec3(0, 0, 0), 1.0);
     Step s = step(fixed, sphere(23, 11, Vec3(1.5, 0, 0.01), 1.0));
-    tracker.update(0, s.pairs, s.regions);
-    tracker.update(5, s.pairs, s.regions);
+    tracker.update(0, s.regions);
+    tracker.update(5, s.regions);
     EXPECT_EQ(s.regions[0].id, 2u);
     EXPECT_TRUE(s.regions[0].predecessors.empty());
 }

@@ -47,8 +47,8 @@ struct Region {
     std::uint32_t obj_a = 0;
     std::uint32_t obj_b = 0;
     std::uint32_t pairs = 0;
-    std::uint32_t triangles_a = 0;   ///< distinct triangles on obj_a's side
-    std::uint32_t triangles_b = 0;   ///< on obj_b's side (self: 0, all counted in triangles_a)
+    std::vector<std::uint32_t> triangles_a;  ///< obj_a's colliding triangles, ascending
+    std::vector<std::uint32_t> triangles_b;  ///< obj_b's (self: empty, all in triangles_a)
     std::vector<IntersectionCurve> curves;
     std::uint32_t loops = 0;         ///< closed curves
     double curve_length = 0;         ///< the curves' total length
@@ -67,8 +67,8 @@ struct RegionOptions {
     bool curves = true;   ///< chain the segments into curves (length, loops); off: counts and box only
 };
 
-/// The regions of one frame's colliding pairs (`pairs` sorted, as the pipeline reports them),
-/// ordered by their first pair. Runs on TBB's threads.
+/// The regions of one frame's colliding pairs (in any order; each pair once), ordered by their
+/// first pair. Runs on TBB's threads.
 std::vector<Region> find_regions(const Frame& frame, std::span<const TrianglePair> pairs,
                                  const RegionOptions& options = {});
 
@@ -94,8 +94,8 @@ struct RegionTrack {
 /// most keeps its id and the others end with merged_into set.
 class RegionTracker {
 public:
-    /// Assigns ids and predecessors to `regions` (find_regions of `pairs` on frame `frame`).
-    void update(std::uint32_t frame, std::span<const TrianglePair> pairs, std::vector<Region>& regions);
+    /// Assigns ids and predecessors to `regions` (find_regions of frame `frame`).
+    void update(std::uint32_t frame, std::vector<Region>& regions);
     /// Every track so far, by id.
     const std::vector<RegionTrack>& tracks() const { return m_tracks; }
 
@@ -104,7 +104,7 @@ private:
         std::uint32_t id;
         std::uint32_t obj_a, obj_b;
         Eigen::AlignedBox3d box;
-        std::vector<std::uint64_t> triangles;  ///< (object << 32 | triangle), sorted
+        std::vector<std::uint32_t> triangles_a, triangles_b;
     };
     std::vector<Previous> m_previous;
     std::vector<RegionTrack> m_tracks;

@@ -1,5 +1,5 @@
 // A frame's regions: every pair's intersection (in parallel), the pairs joined into regions by
-// the vertices their triangles share (a union-find over runs of equal vertex keys), then each
+// the vertices their triangles share (a union-find), then each
 // region's counts, box and curves (in parallel over regions).
 
 #include "curves.hpp"
@@ -7,7 +7,6 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <numeric>
@@ -37,38 +36,47 @@ private:
     std::vector<std::uint32_t> m_size;
 };
 
-// A vertex of one side of one object pair: pairs holding the same key touch there.
-struct VertexKey {
-    std::uint64_t objects;  ///< obj_a << 32 | obj_b
-    std::uint64_t vertex;   ///< side << 32 | vertex id (self pairs: side 0 for both triangles)
-    std::uint32_t pair;
-    bool operator<(const VertexKey& o) const {
-        return objects != o.objects ? objects < o.objects : vertex != o.vertex ? vertex < o.vertex : pair < o.pair;
-    }
-};
-
-// The pairs of each region, regions ordered by their first pair.
+// The pairs of each region, regions ordered by their first pair. Within the pairs of one
+// object pair, a pair joins the first pair seen at
+// each of its six vertices (dense arrays over the objects' vertices, reset where touched).
 std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::span<const TrianglePair> pairs) {
-    std::vector<VertexKey> keys(pairs.size() * 6);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 4096), [&](const auto& range) {
-        for (std::size_t i = range.begin(); i != range.end(); ++i) {
-            const TrianglePair& p = pairs[i];
-            const std::uint64_t objects = std::uint64_t(p.obj_a) << 32 | p.obj_b;
-            const std::uint64_t side_b = p.obj_a == p.obj_b ? 0 : std::uint64_t(1) << 32;
-            const TriIndices& a = frame.objects[p.obj_a].topology->triangles[p.tri_a];
-            const TriIndices& b = frame.objects[p.obj_b].topology->triangles[p.tri_b];
-            for (int k = 0; k < 3; ++k) {
-                keys[6 * i + k] = {objects, a[k], static_cast<std::uint32_t>(i)};
-                keys[6 * i + 3 + k] = {objects, side_b | b[k], static_cast<std::uint32_t>(i)};
-            }
-        }
-    });
-    tbb::parallel_sort(keys.begin(), keys.end());
     DisjointSets sets(pairs.size());
-    for (std::size_t i = 1; i < keys.size(); ++i) {
-        if (keys[i].objects == keys[i - 1].objects && keys[i].vertex == keys[i - 1].vertex) {
-            sets.unite(keys[i].pair, keys[i - 1].pair);
+    std::size_t most_vertices = 0;
+    for (const ObjectFrame& object : frame.objects) most_vertices = std::max<std::size_t>(most_vertices, object.topology->vertex_count);
+    std::vector<std::uint32_t> first_a(most_vertices, UINT32_MAX), first_b(most_vertices, UINT32_MAX);
+    const auto join = [&](std::vector<std::uint32_t>& first, std::uint32_t vertex, std::uint32_t pair) {
+        if (first[vertex] == UINT32_MAX) {
+            first[vertex] = pair;
+        } else {
+            sets.unite(pair, first[vertex]);
         }
+    };
+    // The pairs in object-pair order (the pipeline's sorted pairs already are).
+    const auto objects = [&](std::uint32_t i) { return std::uint64_t(pairs[i].obj_a) << 32 | pairs[i].obj_b; };
+    std::vector<std::uint32_t> order(pairs.size());
+    std::iota(order.begin(), order.end(), 0u);
+    if (!std::is_sorted(order.begin(), order.end(), [&](auto x, auto y) { return objects(x) < objects(y); })) {
+        std::stable_sort(order.begin(), order.end(), [&](auto x, auto y) { return objects(x) < objects(y); });
+    }
+    for (std::size_t begin = 0; begin < order.size();) {
+        std::size_t end = begin;
+        while (end < order.size() && objects(order[end]) == objects(order[begin])) ++end;
+        const TrianglePair& first = pairs[order[begin]];
+        const ObjectFrame& a = frame.objects[first.obj_a];
+        const ObjectFrame& b = frame.objects[first.obj_b];
+        // Self pairs: both triangles' vertices are one object's, in one array.
+        std::vector<std::uint32_t>& side_b = first.obj_a == first.obj_b ? first_a : first_b;
+        for (std::size_t k = begin; k < end; ++k) {
+            const std::uint32_t i = order[k];
+            for (const std::uint32_t v : a.topology->triangles[pairs[i].tri_a]) join(first_a, v, i);
+            for (const std::uint32_t v : b.topology->triangles[pairs[i].tri_b]) join(side_b, v, i);
+        }
+        for (std::size_t k = begin; k < end; ++k) {
+            const std::uint32_t i = order[k];
+            for (const std::uint32_t v : a.topology->triangles[pairs[i].tri_a]) first_a[v] = UINT32_MAX;
+            for (const std::uint32_t v : b.topology->triangles[pairs[i].tri_b]) side_b[v] = UINT32_MAX;
+        }
+        begin = end;
     }
     std::vector<std::uint32_t> region_of_root(pairs.size(), UINT32_MAX);
     std::vector<std::vector<std::uint32_t>> groups;
@@ -83,9 +91,10 @@ std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::spa
     return groups;
 }
 
-std::uint32_t distinct(std::vector<std::uint64_t>& values) {
-    std::sort(values.begin(), values.end());
-    return static_cast<std::uint32_t>(std::unique(values.begin(), values.end()) - values.begin());
+// Sorted, each once (pairs come sorted by their first triangle, so side A often already is).
+void sort_unique(std::vector<std::uint32_t>& values) {
+    if (!std::is_sorted(values.begin(), values.end())) std::sort(values.begin(), values.end());
+    values.erase(std::unique(values.begin(), values.end()), values.end());
 }
 
 Region describe(std::span<const TrianglePair> pairs, std::span<const regions::Piece> pieces,
@@ -94,7 +103,8 @@ Region describe(std::span<const TrianglePair> pairs, std::span<const regions::Pi
     region.obj_a = pairs[indices.front()].obj_a;
     region.obj_b = pairs[indices.front()].obj_b;
     region.pairs = static_cast<std::uint32_t>(indices.size());
-    std::vector<std::uint64_t> side_a, side_b;
+    std::vector<std::uint32_t>& side_a = region.triangles_a;
+    std::vector<std::uint32_t>& side_b = region.triangles_b;
     const bool self = region.obj_a == region.obj_b;
     // A segment two pairs report with the same ends (an edge lying in the other surface, seen
     // from both of its triangles) counts once.
@@ -118,8 +128,8 @@ Region describe(std::span<const TrianglePair> pairs, std::span<const regions::Pi
         region.curve_length += (piece.ends[1] - piece.ends[0]).norm();
         unique_segments.push_back(segments[k].second);
     }
-    region.triangles_a = distinct(side_a);
-    region.triangles_b = distinct(side_b);
+    sort_unique(side_a);
+    sort_unique(side_b);
     if (options.curves) {
         region.curves = regions::chain_curves(pieces, unique_segments);
         for (const IntersectionCurve& curve : region.curves) region.loops += curve.closed ? 1 : 0;

@@ -187,35 +187,92 @@ Piece coplanar(const Triangle& a, const Triangle& b, std::vector<Vec3>* polygon)
         return (q[u] - p[u]) * (r[v] - p[v]) - (q[v] - p[v]) * (r[u] - p[u]);
     };
     const double orientation = cross2(b[0], b[1], b[2]) >= 0 ? 1.0 : -1.0;
-    std::vector<Vec3> clipped(a.begin(), a.end()), next;
-    for (int e = 0; e < 3 && !clipped.empty(); ++e) {
+    // A triangle clipped by three half-planes keeps at most 6 corners: fixed buffers.
+    struct Polygon {
+        std::array<Vec3, 8> corners;
+        std::size_t size = 0;
+        void push(const Vec3& p) { corners[size++] = p; }
+    };
+    Polygon clipped, next;
+    for (const Vec3& corner : a) clipped.push(corner);
+    for (int e = 0; e < 3 && clipped.size > 0; ++e) {
         const Vec3& p = b[e];
         const Vec3& q = b[(e + 1) % 3];
-        next.clear();
-        for (std::size_t i = 0; i < clipped.size(); ++i) {
-            const Vec3& s = clipped[i];
-            const Vec3& t = clipped[(i + 1) % clipped.size()];
+        next.size = 0;
+        for (std::size_t i = 0; i < clipped.size; ++i) {
+            const Vec3& s = clipped.corners[i];
+            const Vec3& t = clipped.corners[(i + 1) % clipped.size];
             const double ds = orientation * cross2(p, q, s);
             const double dt = orientation * cross2(p, q, t);
-            if (ds >= 0) next.push_back(s);
-            if ((ds >= 0) != (dt >= 0) && ds != dt) next.push_back(s + (ds / (ds - dt)) * (t - s));
+            if (ds >= 0) next.push(s);
+            if ((ds >= 0) != (dt >= 0) && ds != dt && next.size < next.corners.size()) next.push(s + (ds / (ds - dt)) * (t - s));
         }
-        clipped.swap(next);
+        std::swap(clipped, next);
     }
     // Rounding or a degenerate triangle can clip everything away from a pair the exact test
-    // found touching: keep the nearest corner of a.
-    if (clipped.empty()) clipped.push_back(a[0]);
+    // found touching: keep a corner of a.
+    if (clipped.size == 0) clipped.push(a[0]);
+    const std::size_t n = clipped.size;
     Piece piece;
     Vec3 twice_area = Vec3::Zero();
-    for (std::size_t i = 0; i < clipped.size(); ++i) twice_area += clipped[i].cross(clipped[(i + 1) % clipped.size()]);
-    piece.area = clipped.size() >= 3 ? 0.5 * twice_area.norm() : 0.0;
-    piece.kind = clipped.size() >= 3 ? Kind::Polygon : clipped.size() == 2 ? Kind::Segment : Kind::Point;
+    for (std::size_t i = 0; i < n; ++i) twice_area += clipped.corners[i].cross(clipped.corners[(i + 1) % n]);
+    piece.area = n >= 3 ? 0.5 * twice_area.norm() : 0.0;
+    piece.kind = n >= 3 ? Kind::Polygon : n == 2 ? Kind::Segment : Kind::Point;
     Eigen::AlignedBox3d box;
-    for (const Vec3& point : clipped) box.extend(point);
+    for (std::size_t i = 0; i < n; ++i) box.extend(clipped.corners[i]);
     piece.ends = {box.min(), box.max()};
-    if (piece.kind != Kind::Polygon) piece.ends = {clipped.front(), clipped.back()};
-    if (polygon) *polygon = clipped;
+    if (piece.kind != Kind::Polygon) piece.ends = {clipped.corners[0], clipped.corners[n - 1]};
+    if (polygon) polygon->assign(clipped.corners.begin(), clipped.corners.begin() + static_cast<std::ptrdiff_t>(n));
     return piece;
+}
+
+// The generic case, every vertex strictly off the other plane: each triangle has one vertex
+// alone on its side and crosses the other plane on the two edges from it. The four
+// orientations of those edges against each other decide which of the four crossing points lie
+// in the other triangle (Guigue and Devillers' interval test, exact); a zero among them (a
+// curve through an edge-edge crossing) is left to the general path. Only the two ends are
+// constructed.
+bool generic_crossing(const Triangle& a, const TriIndices& ia, const Triangle& b, const TriIndices& ib,
+                      const TrianglePair& pair, const std::array<int, 3>& sa, const std::array<int, 3>& sb, Piece& piece) {
+    const auto lone = [](const std::array<int, 3>& s) { return s[0] != s[1] ? (s[0] != s[2] ? 0 : 1) : 2; };
+    const int p = lone(sa), r = lone(sb);
+    // Each triangle's crossing edges, oriented along its cycle: (p, p+1) and (p+2, p).
+    const std::array<std::array<int, 2>, 2> ea = {{{p, (p + 1) % 3}, {(p + 2) % 3, p}}};
+    const std::array<std::array<int, 2>, 2> eb = {{{r, (r + 1) % 3}, {(r + 2) % 3, r}}};
+    int d[2][2];
+    for (int x = 0; x < 2; ++x) {
+        for (int y = 0; y < 2; ++y) {
+            d[x][y] = orient3d(a[ea[x][0]], a[ea[x][1]], b[eb[y][0]], b[eb[y][1]]);
+            if (d[x][y] == 0) return false;
+        }
+    }
+    // A point of edge (u, v) in the other triangle's plane is on the inner side of that
+    // triangle's cyclic edge (c, e) when -orient3d(c, e, u, v) has the sign of u's side.
+    std::array<End, 4> ends{};
+    int count = 0;
+    for (int x = 0; x < 2; ++x) {
+        if (-d[x][0] * sa[ea[x][0]] > 0 && -d[x][1] * sa[ea[x][0]] > 0) {
+            const Vec3& u = a[ea[x][0]];
+            const Vec3& v = a[ea[x][1]];
+            const Feature edge{pair.obj_a, Feature::Edge, std::min(ia[ea[x][0]], ia[ea[x][1]]), std::max(ia[ea[x][0]], ia[ea[x][1]])};
+            ends[count++] = {u + crossing_parameter(u, v, b) * (v - u),
+                             make_key(edge, {pair.obj_b, Feature::Face, pair.tri_b, 0}), true};
+        }
+    }
+    for (int y = 0; y < 2; ++y) {
+        if (-d[0][y] * sb[eb[y][0]] > 0 && -d[1][y] * sb[eb[y][0]] > 0) {
+            const Vec3& u = b[eb[y][0]];
+            const Vec3& v = b[eb[y][1]];
+            const Feature edge{pair.obj_b, Feature::Edge, std::min(ib[eb[y][0]], ib[eb[y][1]]), std::max(ib[eb[y][0]], ib[eb[y][1]])};
+            ends[count++] = {u + crossing_parameter(u, v, a) * (v - u),
+                             make_key(edge, {pair.obj_a, Feature::Face, pair.tri_a, 0}), true};
+        }
+    }
+    if (count != 2) return false;  // not a crossing pair after all: the general path decides
+    piece.kind = Kind::Segment;
+    piece.ends = {ends[0].point, ends[1].point};
+    piece.keys = {ends[0].key, ends[1].key};
+    return true;
 }
 
 std::array<int, 3> sides(const Triangle& plane, const Triangle& t) {
@@ -225,7 +282,7 @@ std::array<int, 3> sides(const Triangle& plane, const Triangle& t) {
 
 }  // namespace
 
-Piece intersect(const Frame& frame, const TrianglePair& pair, std::vector<Vec3>* polygon) {
+Piece intersect(const Frame& frame, const TrianglePair& pair, std::vector<Vec3>* polygon, bool fast) {
     const ObjectFrame& object_a = frame.objects[pair.obj_a];
     const ObjectFrame& object_b = frame.objects[pair.obj_b];
     const Triangle a = object_a.corners(pair.tri_a);
@@ -235,6 +292,13 @@ Piece intersect(const Frame& frame, const TrianglePair& pair, std::vector<Vec3>*
     const bool flat_a = sa == std::array<int, 3>{0, 0, 0};
     const bool flat_b = sb == std::array<int, 3>{0, 0, 0};
     if (flat_a || flat_b) return coplanar(a, b, polygon);
+    const TriIndices& ia = object_a.topology->triangles[pair.tri_a];
+    const TriIndices& ib = object_b.topology->triangles[pair.tri_b];
+    Piece piece;
+    if (fast && sa[0] * sa[1] * sa[2] != 0 && sb[0] * sb[1] * sb[2] != 0 && generic_crossing(a, ia, b, ib, pair, sa, sb, piece)) {
+        if (polygon) polygon->assign(piece.ends.begin(), piece.ends.end());
+        return piece;
+    }
     return crossing(a, object_a.topology->triangles[pair.tri_a], b, object_b.topology->triangles[pair.tri_b], pair, sa,
                     sb, polygon);
 }

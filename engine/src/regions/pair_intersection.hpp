@@ -48,7 +48,8 @@ struct Piece {
 };
 
 /// The intersection of `pair`'s triangles in `frame`; `polygon` receives a coplanar
-/// polygon's corners (or a point or segment's points) when not null.
-Piece intersect(const Frame& frame, const TrianglePair& pair, std::vector<Vec3>* polygon = nullptr);
+/// polygon's corners (or a point or segment's points) when not null. `fast` false: the general
+/// path for every pair (the tests compare the two).
+Piece intersect(const Frame& frame, const TrianglePair& pair, std::vector<Vec3>* polygon = nullptr, bool fast = true);
 
 }  // namespace collidescope::regions

@@ -10,19 +10,7 @@
 namespace collidescope {
 namespace {
 
-std::vector<std::uint64_t> triangle_keys(std::span<const TrianglePair> pairs, const Region& region) {
-    std::vector<std::uint64_t> keys;
-    keys.reserve(2 * region.pair_indices.size());
-    for (const std::uint32_t i : region.pair_indices) {
-        keys.push_back(std::uint64_t(pairs[i].obj_a) << 32 | pairs[i].tri_a);
-        keys.push_back(std::uint64_t(pairs[i].obj_b) << 32 | pairs[i].tri_b);
-    }
-    std::sort(keys.begin(), keys.end());
-    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-    return keys;
-}
-
-std::size_t shared(const std::vector<std::uint64_t>& x, const std::vector<std::uint64_t>& y) {
+std::size_t shared(const std::vector<std::uint32_t>& x, const std::vector<std::uint32_t>& y) {
     std::size_t count = 0;
     for (auto i = x.begin(), j = y.begin(); i != x.end() && j != y.end();) {
         if (*i < *j) {
@@ -38,10 +26,8 @@ std::size_t shared(const std::vector<std::uint64_t>& x, const std::vector<std::u
 
 }  // namespace
 
-void RegionTracker::update(std::uint32_t frame, std::span<const TrianglePair> pairs, std::vector<Region>& regions) {
+void RegionTracker::update(std::uint32_t frame, std::vector<Region>& regions) {
     if (m_any && frame != m_last_frame + 1) m_previous.clear();  // a gap: nothing continues
-    std::vector<std::vector<std::uint64_t>> keys(regions.size());
-    for (std::size_t r = 0; r < regions.size(); ++r) keys[r] = triangle_keys(pairs, regions[r]);
 
     // weight[r][p]: triangles shared (+1, so a box overlap alone weighs 1 and sharing wins).
     std::vector<std::map<std::size_t, std::size_t>> weight(regions.size());
@@ -50,7 +36,9 @@ void RegionTracker::update(std::uint32_t frame, std::span<const TrianglePair> pa
         for (std::size_t p = 0; p < m_previous.size(); ++p) {
             const Previous& previous = m_previous[p];
             if (previous.obj_a != regions[r].obj_a || previous.obj_b != regions[r].obj_b) continue;
-            if (const std::size_t n = shared(keys[r], previous.triangles); n > 0) {
+            const std::size_t n = shared(regions[r].triangles_a, previous.triangles_a) +
+                                  shared(regions[r].triangles_b, previous.triangles_b);
+            if (n > 0) {
                 weight[r][p] = n + 1;
                 any_shared = true;
             }
@@ -74,6 +62,7 @@ void RegionTracker::update(std::uint32_t frame, std::span<const TrianglePair> pa
     }
     for (std::size_t r = 0; r < regions.size(); ++r) {
         Region& region = regions[r];
+        region.predecessors.clear();
         std::size_t keeper = SIZE_MAX, keeper_weight = 0, strongest = SIZE_MAX, strongest_weight = 0;
         for (const auto& [p, w] : weight[r]) {
             region.predecessors.push_back(m_previous[p].id);
@@ -109,7 +98,8 @@ void RegionTracker::update(std::uint32_t frame, std::span<const TrianglePair> pa
     }
     m_previous.clear();
     for (std::size_t r = 0; r < regions.size(); ++r) {
-        m_previous.push_back({regions[r].id, regions[r].obj_a, regions[r].obj_b, regions[r].box, std::move(keys[r])});
+        m_previous.push_back({regions[r].id, regions[r].obj_a, regions[r].obj_b, regions[r].box, regions[r].triangles_a,
+                              regions[r].triangles_b});
     }
     m_last_frame = frame;
     m_any = true;
