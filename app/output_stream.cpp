@@ -81,13 +81,20 @@ OutputStream::OutputStream(const std::string& target) : m_target(target), m_to_s
         m_stream = &std::cout;
         return;
     }
-    const std::string partial = partial_name(target);
-    m_buffer = std::make_unique<FileBuffer>(partial);
+    // A device or a pipe (/dev/null, a FIFO) is written as it is: it has no .partial to keep,
+    // and removing or renaming over it would replace the device with a file.
+    std::error_code status_error;
+    const std::filesystem::file_status status = std::filesystem::status(target, status_error);
+    m_direct = !status_error && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
+               !std::filesystem::is_directory(status);
+    const std::string path = m_direct ? target : partial_name(target);
+    m_buffer = std::make_unique<FileBuffer>(path);
     if (!m_buffer->is_open()) {
-        throw InputError(partial + ": cannot create file (" + std::strerror(m_buffer->error()) + ")");
+        throw InputError(path + ": cannot " + (m_direct ? "open" : "create file") + " (" + std::strerror(m_buffer->error()) + ")");
     }
     m_file_stream = std::make_unique<std::ostream>(m_buffer.get());
     m_stream = m_file_stream.get();
+    if (m_direct) return;
     // A complete file from an earlier run must not pass for this run's output if it stops.
     std::error_code ignored;
     std::filesystem::remove(target, ignored);
@@ -104,7 +111,7 @@ void OutputStream::flush_or_throw(const std::string& what) {
     // Cut what reached the disk of the failed frame, so the file ends on a whole frame.
     m_buffer->close();
     std::error_code ignored;
-    std::filesystem::resize_file(partial_name(m_target), m_good_bytes, ignored);
+    if (!m_direct) std::filesystem::resize_file(partial_name(m_target), m_good_bytes, ignored);
     throw InputError(message + "; the file holds the frames before it");
 }
 
@@ -119,6 +126,10 @@ void OutputStream::finish() {
     if (!m_buffer->close()) {
         throw InputError(location() + ": cannot close the file (" + std::strerror(m_buffer->error()) + ")");
     }
+    if (m_direct) {
+        m_renamed = true;
+        return;
+    }
     std::error_code error;
     std::filesystem::rename(partial_name(m_target), m_target, error);
     if (error) throw InputError(partial_name(m_target) + ": cannot rename it to " + m_target + " (" + error.message() + ")");
@@ -132,7 +143,7 @@ void OutputStream::finish_partial() {
 
 std::string OutputStream::location() const {
     if (m_to_stdout) return "stdout";
-    return m_renamed ? m_target : partial_name(m_target);
+    return m_renamed || m_direct ? m_target : partial_name(m_target);
 }
 
 }  // namespace collidescope::app

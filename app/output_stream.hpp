@@ -11,7 +11,8 @@
 
 namespace collidescope::app {
 
-/// An output named on the command line: `-` is stdout, anything else a file.
+/// An output named on the command line: `-` is stdout, an existing device or pipe
+/// (/dev/null, a FIFO) is written in place, anything else a file.
 class OutputStream {
 public:
     /// Opens `target` (a file: removes an existing `target`, creates `target.partial`). Throws
@@ -43,6 +44,7 @@ private:
 
     std::string m_target;
     bool m_to_stdout;
+    bool m_direct = false;  ///< an existing device or pipe: written in place, never renamed
     bool m_renamed = false;
     std::uint64_t m_good_bytes = 0;  ///< file size after the last frame written whole
     std::unique_ptr<FileBuffer> m_buffer;

@@ -12,7 +12,12 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <sys/stat.h>
+
 #include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <thread>
 #include <string_view>
 
 namespace collidescope {
@@ -68,6 +73,27 @@ TEST(CheckCli, PairsTsvIsSortedCanonicalAndUnique) {
             EXPECT_LT(pairs[k - 1], pairs[k]) << "line " << k + 1;
         }
     }
+}
+
+// An output that is a device or a pipe (/dev/null, a FIFO) is written in place: no .partial
+// beside it, no rename over it, and it is still a pipe afterwards (as root, the rename would
+// have replaced /dev/null with a file).
+TEST(CheckCli, OutputsToAPipeAreWrittenInPlace) {
+    TempDir dir;
+    const std::filesystem::path fifo = dir.path() / "pairs.fifo";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    std::string received;
+    std::thread reader([&] {
+        std::ifstream in(fifo);
+        received.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    });
+    const auto result = run_cli({"check", "--scene", "C:small", "--pairs", fifo.string(),
+                                 "--exit-zero", "-q"}, dir.path());
+    reader.join();
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+    EXPECT_FALSE(received.empty());
+    EXPECT_EQ(std::count(received.begin(), received.end(), '\n'), 184);  // C:small's pairs
 }
 
 TEST(CheckCli, StatsJsonLinesOneObjectPerFrame) {
