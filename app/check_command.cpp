@@ -108,14 +108,15 @@ std::string interrupted_line(int signal, const FrameRange& range, std::uint32_t 
 // A line per region over the run, the first k_region_lines of them (all are in the file).
 void log_region_lines(Progress& progress, const RegionsWriter& writer, bool quiet, const std::string& where) {
     constexpr std::size_t k_region_lines = 20;
-    if (quiet) return;
     const std::vector<std::string> lines = writer.summary_lines();
-    for (std::size_t i = 0; i < lines.size() && i < k_region_lines; ++i) progress.log(lines[i]);
-    if (lines.size() > k_region_lines) {
+    for (std::size_t i = 0; i < lines.size() && i < k_region_lines && !quiet; ++i) progress.log(lines[i]);
+    if (lines.size() > k_region_lines && !quiet) {
         progress.log("... and " + std::to_string(lines.size() - k_region_lines) + " more regions (every one in " +
                      where + ")");
     }
-    progress.log(std::to_string(lines.size()) + " regions over the run");
+    char ms[32];
+    std::snprintf(ms, sizeof ms, "%.3f", writer.ms());
+    progress.log(std::to_string(lines.size()) + " regions over the run (found and followed in " + ms + " ms)");
 }
 
 int run_check(const CheckOptions& options) {

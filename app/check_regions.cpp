@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <cstdio>
 
 namespace collidescope::app {
@@ -42,8 +43,10 @@ std::string region_json(std::uint32_t frame, const Region& region, const std::ve
 }
 
 void RegionsWriter::on_frame(const FrameReport& report) {
+    const auto start = std::chrono::steady_clock::now();
     std::vector<Region> regions = find_regions(report.frame, report.colliding_pairs);
     m_tracker.update(report.stats.frame, regions);
+    m_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     for (const Region& region : regions) m_out << region_json(report.stats.frame, region, m_names) << '\n';
 }
 
@@ -55,9 +58,9 @@ std::vector<std::string> RegionsWriter::summary_lines() const {
                                         : "objects '" + name_of(m_names, track.obj_a) + "' and '" +
                                               name_of(m_names, track.obj_b) + "'";
         char figures[160];
-        std::snprintf(figures, sizeof figures, ", frames %u-%u (%u frames), curve %.6g at most (frame %u), %u pairs at most",
-                      track.first_frame, track.last_frame, track.frames, track.max_curve_length,
-                      track.max_curve_length_frame, track.max_pairs);
+        std::snprintf(figures, sizeof figures, ", frames %u-%u (%u frame%s), curve %.6g at most (frame %u), %u pairs at most",
+                      track.first_frame, track.last_frame, track.frames, track.frames == 1 ? "" : "s",
+                      track.max_curve_length, track.max_curve_length_frame, track.max_pairs);
         std::string line = "region " + std::to_string(track.id) + ": " + objects + figures;
         if (track.split_from != 0) line += "; split from region " + std::to_string(track.split_from);
         if (track.merged_into != 0) line += "; merged into region " + std::to_string(track.merged_into);

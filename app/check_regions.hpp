@@ -22,11 +22,14 @@ public:
     /// 52), 120 pairs at most; split from region 1": one per region track, in id order.
     std::vector<std::string> summary_lines() const;
     std::size_t region_count() const { return m_tracker.tracks().size(); }
+    /// Milliseconds spent finding and following regions (not writing them).
+    double ms() const { return m_ms; }
 
 private:
     std::ostream& m_out;
     std::vector<std::string> m_names;
     RegionTracker m_tracker;
+    double m_ms = 0;
 };
 
 /// One region of one frame as the JSON object `--regions` writes (without a newline).

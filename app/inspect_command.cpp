@@ -90,6 +90,13 @@ void print_text(const nlohmann::ordered_json& info) {
     const auto& pairs = info["pairs"];
     std::cout << "pairs: " << pairs["total"] << " colliding pairs, " << pairs["frames_with_collisions"]
               << " frames with collisions, at most " << pairs["max_per_frame"] << " (frame " << pairs["max_frame"] << ")\n";
+    if (info.contains("regions")) {
+        const auto& regions = info["regions"];
+        std::cout << "regions: " << regions["ids"] << " over the run, on " << regions["frames_with_regions"]
+                  << " frames, at most " << regions["max_per_frame"] << " in a frame (frame " << regions["max_frame"]
+                  << "); longest curve " << regions["longest_curve"].get<double>() << " (region "
+                  << regions["longest_curve_region"] << ", frame " << regions["longest_curve_frame"] << ")\n";
+    }
     std::cout << "time per stage (ms):          median        total\n";
     for (const auto& [name, stage] : info["stages"].items()) {
         char line[128];

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <set>
 #include <map>
 
 namespace collidescope::app {
@@ -77,6 +78,30 @@ void add_time(const recorder::Recording& rec, nlohmann::ordered_json& out) {
                                         : nlohmann::ordered_json::array({times.front(), times.back()});
 }
 
+namespace {
+
+// /regions (record --regions): how many regions over the run, the most in one frame, and the
+// longest curve (its region and frame).
+nlohmann::ordered_json region_summary(const recorder::Recording& rec, const std::vector<std::uint32_t>& indices) {
+    std::set<std::uint32_t> ids;
+    std::uint64_t most = 0, most_frame = 0, frames_with = 0;
+    double longest = 0;
+    std::uint32_t longest_id = 0, longest_frame = 0;
+    for (std::uint64_t r = 0; r < rec.frames_complete(); ++r) {
+        const std::vector<recorder::RecordedRegion> regions = rec.regions(r);
+        frames_with += regions.empty() ? 0 : 1;
+        if (regions.size() > most) most = regions.size(), most_frame = indices[r];
+        for (const recorder::RecordedRegion& region : regions) {
+            ids.insert(region.id);
+            if (region.curve_length > longest) longest = region.curve_length, longest_id = region.id, longest_frame = indices[r];
+        }
+    }
+    return {{"ids", ids.size()}, {"frames_with_regions", frames_with}, {"max_per_frame", most}, {"max_frame", most_frame},
+            {"longest_curve", longest}, {"longest_curve_region", longest_id}, {"longest_curve_frame", longest_frame}};
+}
+
+}  // namespace
+
 nlohmann::ordered_json inspect_info(const recorder::Recording& rec) {
     nlohmann::ordered_json out;
     out["file"] = rec.path();
@@ -124,6 +149,7 @@ nlohmann::ordered_json inspect_info(const recorder::Recording& rec) {
     }
     out["pairs"] = {{"total", total}, {"frames_with_collisions", colliding_frames}, {"max_per_frame", max_pairs},
                     {"max_frame", max_frame}};
+    if (rec.has_regions()) out["regions"] = region_summary(rec, indices);
     nlohmann::ordered_json stages = nlohmann::ordered_json::object();
     for (const recorder::Series<double>& s : rec.stage_ms()) {
         double sum = 0;

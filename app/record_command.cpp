@@ -35,6 +35,7 @@ struct RecordOptions {
     int writer_nice = 10;           ///< nice increment of the writer thread (0 = none)
     std::string join = "virtual";   ///< under mpirun: how the ranks' parts are joined (ranks.hpp)
     bool quiet = false;
+    bool regions = false;           ///< --regions: /regions per frame (schema 1.5)
     EngineOptions engine;           ///< --method, --self, --threads, --gpu-*, --aabb-*
 };
 
@@ -88,6 +89,7 @@ recorder::SessionInfo session_info(const Scene& scene, const RecordOptions& opti
     info.fps = scene.fps;
     info.clip = scene.clip;
     info.up_axis = scene.up_axis;
+    info.regions = options.regions;
     return info;
 }
 
@@ -126,6 +128,9 @@ int run_record(const RecordOptions& options) {
     // No process-wide mallopt here: the recorder maps its own frame-sized buffers
     // (recorder/src/large_blocks.hpp), which bounds memory without slowing the engine.
     const std::uint32_t depth_every = parse_depth(options.depth);
+    if (options.regions && ranks::parallel()) {
+        throw InputError("--regions follows regions from frame to frame, so it records in one process: run it without mpirun");
+    }
     const std::uint64_t budget = options.budget.empty() ? 0 : parse_size(options.budget, "--budget");
     const Scene scene = open_scene(options.inputs, options.scene, options.engine.animation);
     // Under mpirun: this rank's block, into a part file rank 0 joins (ranks.hpp).
@@ -207,6 +212,8 @@ Command add_record_command(CLI::App& app) {
                        "copy (one self-contained FILE; the parts are removed). Serial runs ignore it")
         ->check(CLI::IsMember({"virtual", "copy"}))
         ->capture_default_str();
+    record->add_flag("--regions", options->regions,
+                     "Record each frame's interpenetration regions and their curves (/regions; docs/explanation/regions.md)");
     record->add_flag("-q,--quiet", options->quiet, "Only the final line on stderr");
     return {record, [options] { return run_record(*options); }};
 }

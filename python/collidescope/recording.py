@@ -13,7 +13,19 @@ import numpy as np
 SCHEMA = "collidescope-trace"
 MAJOR = 1
 METHOD_GROUPS = ("gpu", "aabb", "decision", "hybrid")
-CSR_OFFSETS = ("collisions/offsets", "gpu/pass_offsets", "gpu/survivor_offsets", "gpu/depth/image_offsets")
+CSR_OFFSETS = ("collisions/offsets", "gpu/pass_offsets", "gpu/survivor_offsets", "gpu/depth/image_offsets",
+               "regions/offsets")
+
+# One row of Recording.regions(frame) (/regions/table and /regions/measures, schema 1.5).
+REGION_DTYPE = np.dtype([("id", np.uint32), ("obj_a", np.uint32), ("obj_b", np.uint32), ("pairs", np.uint32),
+                         ("triangles_a", np.uint32), ("triangles_b", np.uint32), ("loops", np.uint32),
+                         ("curve_length", np.float64), ("coplanar_area", np.float64),
+                         ("box_min", np.float64, (3,)), ("box_max", np.float64, (3,))])
+# One row of Recording.region_tracks().
+TRACK_DTYPE = np.dtype([("id", np.uint32), ("obj_a", np.uint32), ("obj_b", np.uint32), ("first_frame", np.int64),
+                        ("last_frame", np.int64), ("frames", np.int64), ("max_curve_length", np.float64),
+                        ("max_curve_length_frame", np.int64), ("max_pairs", np.int64), ("split_from", np.uint32),
+                        ("merged_into", np.uint32)])
 
 
 class RecordingError(ValueError):
@@ -169,6 +181,97 @@ class Recording:
         d = self._file["gpu/depth"]
         first, end = (int(v) for v in d["image_offsets"][row:row + 2])
         return [self._depth_image(d, i) for i in range(first, end)]
+
+    # -- interpenetration regions (record --regions, schema 1.5) ----------------------------
+
+    @property
+    def has_regions(self):
+        """True when the recording holds /regions (made with `record --regions`)."""
+        return "regions/offsets" in self._file
+
+    def regions(self, frame):
+        """FRAME's interpenetration regions as a numpy record array (REGION_DTYPE): id (follows
+        the region over frames), obj_a, obj_b (equal for self-contact), pairs, triangles_a,
+        triangles_b, loops, curve_length, coplanar_area, box_min, box_max. Raises ValueError
+        when the recording has no regions (record it with --regions)."""
+        first, end = self._region_rows(frame)
+        r = self._file["regions"]
+        out = np.zeros(end - first, dtype=REGION_DTYPE)
+        table = r["table"][first:end]
+        measures = r["measures"][first:end]
+        for k, name in enumerate(("id", "obj_a", "obj_b", "pairs", "triangles_a", "triangles_b", "loops")):
+            out[name] = table[:, k]
+        out["curve_length"], out["coplanar_area"] = measures[:, 0], measures[:, 1]
+        out["box_min"], out["box_max"] = measures[:, 2:5], measures[:, 5:8]
+        return out.view(np.recarray)
+
+    def region_curves(self, frame):
+        """FRAME's intersection curves: a list of (region id, closed, (N, 3) float64 points)."""
+        first, end = self._region_rows(frame)
+        r = self._file["regions"]
+        ids = r["table"][first:end, 0]
+        curve_offsets = r["curve_offsets"][first:end + 1]
+        c0, c1 = int(curve_offsets[0]), int(curve_offsets[-1])
+        closed = r["curve_closed"][c0:c1]
+        point_offsets = r["point_offsets"][c0:c1 + 1]
+        points = r["points"][int(point_offsets[0]):int(point_offsets[-1])]
+        curves = []
+        for k in range(end - first):
+            for c in range(int(curve_offsets[k]), int(curve_offsets[k + 1])):
+                p0, p1 = (int(v) - int(point_offsets[0]) for v in point_offsets[c - c0:c - c0 + 2])
+                curves.append((int(ids[k]), bool(closed[c - c0]), points[p0:p1]))
+        return curves
+
+    def region_predecessors(self, frame):
+        """For each of FRAME's regions (in regions(frame) order), the ids of the previous frame's
+        regions it continues, strongest first (two or more: a merge)."""
+        first, end = self._region_rows(frame)
+        r = self._file["regions"]
+        offsets = r["predecessor_offsets"][first:end + 1]
+        predecessors = r["predecessors"][int(offsets[0]):int(offsets[-1])]
+        base = int(offsets[0])
+        return [predecessors[int(a) - base:int(b) - base].astype(np.int64) for a, b in zip(offsets[:-1], offsets[1:])]
+
+    def region_tracks(self):
+        """Every region over the run, one row per id (TRACK_DTYPE): objects, first and last
+        frame, frames present, its longest curve and that frame, its most pairs, the region it
+        split from and the region it merged into (0: none), as `check --regions` reports them."""
+        if not self.has_regions:
+            raise ValueError("%s: no regions recorded (record with --regions)" % self.path)
+        tracks = {}
+        for frame in self.frames:
+            regions = self.regions(frame)
+            predecessors = self.region_predecessors(frame)
+            for region, before in zip(regions, predecessors):
+                i = int(region.id)
+                t = tracks.get(i)
+                if t is None:
+                    t = tracks[i] = {"id": i, "obj_a": int(region.obj_a), "obj_b": int(region.obj_b),
+                                     "first_frame": int(frame), "frames": 0, "max_curve_length": -1.0,
+                                     "max_pairs": 0, "split_from": int(before[0]) if len(before) else 0, "merged_into": 0}
+                t["last_frame"] = int(frame)
+                t["frames"] += 1
+                t["max_pairs"] = max(t["max_pairs"], int(region.pairs))
+                if float(region.curve_length) > t["max_curve_length"]:
+                    t["max_curve_length"], t["max_curve_length_frame"] = float(region.curve_length), int(frame)
+            # A previous id that goes on nowhere merged into the first region continuing it.
+            ids = {int(region.id) for region in regions}
+            for region, before in zip(regions, predecessors):
+                for p in (int(v) for v in before):
+                    if p != int(region.id) and p not in ids and tracks[p]["merged_into"] == 0:
+                        tracks[p]["merged_into"] = int(region.id)
+        out = np.zeros(len(tracks), dtype=TRACK_DTYPE)
+        for row, i in enumerate(sorted(tracks)):
+            for name in TRACK_DTYPE.names:
+                out[row][name] = tracks[i][name]
+        return out.view(np.recarray)
+
+    def _region_rows(self, frame):
+        row = self._row(frame)
+        if not self.has_regions:
+            raise ValueError("%s: no regions recorded (record with --regions)" % self.path)
+        a, b = (int(v) for v in self._file["regions/offsets"][row:row + 2])
+        return a, b
 
     # -- per-frame stats -------------------------------------------------------------------
 

@@ -138,3 +138,48 @@ def test_a_virtual_join_reads_as_the_whole_run_and_a_missing_part_is_an_error(tm
         assert not f["objects/0/positions"][-1].any()  # HDF5's fill value: why the check exists
     with pytest.raises(collidescope.RecordingError, match=r"run.h5: /\S+ maps rows of parts/p1.h5, which is missing"):
         collidescope.open(tmp_path / "run.h5")
+
+
+def test_regions_equal_check_regions(tmp_path, cli):
+    """record --regions read back: regions(frame), region_curves(frame) and region_tracks()
+    hold what `check --regions` wrote for the same frames."""
+    import json
+    import re
+    scene = ["--scene", "E4:small", "--self", "--frames", "0:6"]
+    code, _, err = run_cli(cli, "record", *scene, "--regions", "-o", str(tmp_path / "r.h5"), "-q")
+    assert code == 0, err
+    code, out, err = run_cli(cli, "check", *scene, "--regions", "-", "--exit-zero")
+    assert code == 0, err
+    lines = [json.loads(line) for line in out.splitlines()]
+    with collidescope.open(str(tmp_path / "r.h5")) as rec:
+        assert rec.has_regions
+        got = []
+        for frame in rec.frames:
+            regions = rec.regions(frame)
+            curves = rec.region_curves(frame)
+            for region in regions:
+                got.append((int(frame), int(region.id), int(region.pairs), float(region.curve_length)))
+            assert len(curves) == sum(len(line["curves"]) for line in lines if line["frame"] == frame)
+        assert got == [(line["frame"], line["region"], line["pairs"], line["curve_length"]) for line in lines]
+        tracks = rec.region_tracks()
+    assert len(tracks) == len({line["region"] for line in lines})
+    for track in tracks:
+        mine = [line for line in lines if line["region"] == track.id]
+        assert track.first_frame == mine[0]["frame"] and track.last_frame == mine[-1]["frame"]
+        assert track.max_pairs == max(line["pairs"] for line in mine)
+    # The splits and merges check prints (its first 20 regions) are the tracks'.
+    for match in re.finditer(r"region (\d+): .*?frames (\d+)-(\d+).*?(; split from region (\d+))?(; merged into region (\d+))?\n",
+                             err):
+        track = tracks[tracks.id == int(match.group(1))][0]
+        assert (track.first_frame, track.last_frame) == (int(match.group(2)), int(match.group(3)))
+        assert track.split_from == int(match.group(5) or 0)
+        assert track.merged_into == int(match.group(7) or 0)
+
+
+def test_regions_absent_is_a_clear_error(tmp_path, cli):
+    code, _, err = run_cli(cli, "record", "--scene", "C:small", "--frames", "0:2", "-o", str(tmp_path / "p.h5"), "-q")
+    assert code == 0, err
+    with collidescope.open(str(tmp_path / "p.h5")) as rec:
+        assert not rec.has_regions
+        with pytest.raises(ValueError, match="no regions recorded"):
+            rec.regions(rec.frames[0])

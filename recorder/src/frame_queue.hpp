@@ -28,6 +28,22 @@ struct ObjectRecord {
     LargeVector<float> positions;                  ///< x y z per vertex, float32
 };
 
+/// One frame's regions, flattened as /regions stores them (schema.hpp).
+struct RegionsRecord {
+    std::vector<std::uint32_t> table;            ///< 7 per region
+    std::vector<double> measures;                ///< 8 per region
+    std::vector<std::uint64_t> curves;           ///< curves per region
+    std::vector<std::uint8_t> closed;            ///< per curve
+    std::vector<std::uint64_t> points;           ///< points per curve
+    std::vector<double> xyz;                     ///< 3 per point
+    std::vector<std::uint64_t> predecessor_counts;  ///< per region
+    std::vector<std::uint32_t> predecessors;
+    std::size_t bytes() const {
+        return table.size() * 4 + measures.size() * 8 + curves.size() * 8 + closed.size() + points.size() * 8 +
+               xyz.size() * 8 + predecessor_counts.size() * 8 + predecessors.size() * 4;
+    }
+};
+
 /// One frame, owned.
 struct FrameRecord {
     std::uint32_t frame = 0;              ///< scene frame number
@@ -47,6 +63,7 @@ struct FrameRecord {
     std::vector<double> hybrid;           ///< for_each_hybrid_value order (zeros without)
     LargeVector<std::array<std::uint32_t, 2>> survivors;  ///< GpuFrameInfo::survivors
     std::vector<GpuDepthImage> depth_images;              ///< GpuFrameInfo::depth_images
+    RegionsRecord regions;                                ///< record --regions only
 
     /// Bytes held (what the queue's cap counts).
     std::size_t bytes() const;

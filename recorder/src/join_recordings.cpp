@@ -268,6 +268,11 @@ Part open_part(const std::filesystem::path& path, bool allow_incomplete) {
         if (!part.complete && !allow_incomplete) {
             part.where.fail("incomplete part (" + recording.partial_reason() + "); join it with --allow-incomplete");
         }
+        if (recording.has_regions()) {
+            // Region ids run on from frame to frame within one process: parts cannot be joined.
+            part.where.fail("holds /regions (record --regions), whose ids follow regions across frames; join does not "
+                            "merge them: record regions in one process");
+        }
         const std::vector<std::uint32_t> frames = recording.frame_indices();
         if (!frames.empty()) {
             part.first = frames.front();

@@ -103,7 +103,8 @@ void RecordingState::count_frames() {
         if (!h5::exists(file.get(), group)) continue;
         for (const std::string& member : group_members(group)) n = std::min(n, rows(std::string(group) + "/" + member));
     }
-    for (const char* offsets : {schema::k_gpu_pass_offsets, schema::k_gpu_survivor_offsets, schema::k_depth_image_offsets}) {
+    for (const char* offsets : {schema::k_gpu_pass_offsets, schema::k_gpu_survivor_offsets, schema::k_depth_image_offsets,
+                                schema::k_region_offsets}) {
         if (h5::exists(file.get(), offsets)) n = std::min(n, offset_frames(offsets));
     }
     const std::vector<std::string> objects_listed = group_members(schema::k_objects);

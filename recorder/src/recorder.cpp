@@ -9,6 +9,7 @@
 
 #include "collidescope/error.hpp"
 #include "collidescope/pipeline.hpp"
+#include "collidescope/regions.hpp"
 
 #include <algorithm>
 #include <exception>
@@ -36,6 +37,29 @@ std::string write_error_line(const std::string& what, std::uint64_t intact, bool
     return what + "; the " + std::to_string(intact) + " frames before it are intact and the file is left unfinished (partial)";
 }
 
+// A frame's regions, flattened as /regions stores them.
+RegionsRecord flatten(const std::vector<Region>& regions) {
+    RegionsRecord out;
+    for (const Region& region : regions) {
+        out.table.insert(out.table.end(),
+                         {region.id, region.obj_a, region.obj_b, region.pairs,
+                          static_cast<std::uint32_t>(region.triangles_a.size()),
+                          static_cast<std::uint32_t>(region.triangles_b.size()), region.loops});
+        out.measures.insert(out.measures.end(), {region.curve_length, region.coplanar_area, region.box.min().x(),
+                                                 region.box.min().y(), region.box.min().z(), region.box.max().x(),
+                                                 region.box.max().y(), region.box.max().z()});
+        out.curves.push_back(region.curves.size());
+        for (const IntersectionCurve& curve : region.curves) {
+            out.closed.push_back(curve.closed ? 1 : 0);
+            out.points.push_back(curve.points.size());
+            for (const Vec3& p : curve.points) out.xyz.insert(out.xyz.end(), {p.x(), p.y(), p.z()});
+        }
+        out.predecessor_counts.push_back(region.predecessors.size());
+        out.predecessors.insert(out.predecessors.end(), region.predecessors.begin(), region.predecessors.end());
+    }
+    return out;
+}
+
 }  // namespace
 
 struct Recorder::State {
@@ -49,13 +73,16 @@ struct Recorder::State {
     std::exception_ptr error;
     std::thread writer;
     bool finished = false;
+    bool regions = false;        ///< SessionInfo::regions: find and follow them per frame
+    RegionTracker tracker;
 
     State(RecorderConfig config_in, const SessionInfo& session, const Frame& first_frame)
         : config(std::move(config_in)),
           copier(config.path.string()),
           file(config.path, session, first_frame, copier.methods(), config.deflate_level),
           queue(config.queue_bytes),
-          budget(config.budget_bytes, session.frame_end - session.frame_begin) {}
+          budget(config.budget_bytes, session.frame_end - session.frame_begin),
+          regions(session.regions) {}
 
     void write_loop();
     void rethrow_writer_error();
@@ -131,7 +158,13 @@ Recorder::~Recorder() {
 
 void Recorder::on_frame(const FrameReport& report) {
     m_state->rethrow_writer_error();
-    if (!m_state->queue.push(m_state->copier.copy(report))) m_state->rethrow_writer_error();
+    FrameRecord record = m_state->copier.copy(report);
+    if (m_state->regions) {
+        std::vector<Region> regions = find_regions(report.frame, report.colliding_pairs);
+        m_state->tracker.update(report.stats.frame, regions);
+        record.regions = flatten(regions);
+    }
+    if (!m_state->queue.push(std::move(record))) m_state->rethrow_writer_error();
 }
 
 RecordSummary Recorder::finish(const std::string& interrupted) {

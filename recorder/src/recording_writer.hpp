@@ -84,6 +84,14 @@ private:
     struct DepthColumns {
         Column image_offsets, info, range, pixel_offsets, pixels;
     };
+    /// /regions (schema 1.5, record --regions): write_regions.cpp.
+    struct RegionColumns {
+        Column offsets, table, measures, curve_offsets, curve_closed, point_offsets, points, predecessor_offsets,
+            predecessors;
+        bool present = false;
+    };
+    void create_regions();
+    void append_regions(std::span<const FrameRecord> records);
     DetailGroup create_detail_group(const std::string& group, const std::vector<std::pair<std::string, std::string>>& columns);
     /// One row per frame of `present` and of every value column; `member` picks a
     /// FrameRecord's (present flag, values) pair.
@@ -117,6 +125,7 @@ private:
     Column m_gpu_passes, m_gpu_pass_offsets;
     Column m_gpu_survivors, m_gpu_survivor_offsets;   ///< 1.2
     DepthColumns m_depth;                             ///< 1.2
+    RegionColumns m_regions;                          ///< 1.5, with SessionInfo::regions
     std::vector<std::uint16_t> m_pixels;              ///< scratch: one image quantised
     std::vector<unsigned char> m_encoded;             ///< scratch: one positions chunk encoded
     std::vector<ObjectColumns> m_objects;

@@ -27,6 +27,7 @@ public:
         check_frame_times();
         check_objects();
         check_pairs();
+        check_regions();
         return std::move(m_report);
     }
 
@@ -46,6 +47,7 @@ private:
     void check_objects();
     void check_object(std::uint32_t k);
     void check_pairs();
+    void check_regions();
     /// Checks CSR offsets (frames + 1 entries used) against the flat array's rows.
     bool check_offsets(const std::string& path, const std::vector<std::uint64_t>& offsets, std::uint64_t flat_rows);
     std::uint64_t triangles_in_force(std::uint32_t object, std::uint32_t frame) const {
@@ -213,6 +215,53 @@ void Checker::check_pairs() {
 
 ValidationReport validate_recording(const Recording& recording, std::size_t max_problems) {
     return Checker(recording, max_problems).run();
+}
+
+}  // namespace collidescope::recorder
+
+namespace collidescope::recorder {
+
+// /regions (1.5): every frame's regions read back through their offsets; each region's pairs
+// no more than the frame's, its objects in range, its id from 1, its counts and measures
+// consistent, each predecessor an id the previous frame had.
+void Checker::check_regions() {
+    if (!m_rec.has_regions()) return;
+    const auto object_count = static_cast<std::uint32_t>(m_rec.objects().size());
+    std::vector<std::uint32_t> previous_ids;
+    for (std::uint64_t r = 0; r < m_frames; ++r) {
+        const std::string where = std::string(schema::k_regions) + ": " + frame_name(r, m_indices);
+        std::vector<RecordedRegion> regions;
+        try {
+            regions = m_rec.regions(r);
+        } catch (const InputError& error) {
+            problem(error.what());
+            return;
+        }
+        const std::uint64_t pairs = m_rec.pairs(r).size();
+        std::uint64_t region_pairs = 0;
+        std::vector<std::uint32_t> ids;
+        for (std::size_t k = 0; k < regions.size(); ++k) {
+            const RecordedRegion& region = regions[k];
+            const std::string name = where + ", region " + std::to_string(k);
+            region_pairs += region.pairs;
+            ids.push_back(region.id);
+            if (region.id == 0) problem(name + " has id 0 (ids start at 1)");
+            if (region.obj_a >= object_count || region.obj_b >= object_count) problem(name + " names an object that does not exist");
+            std::uint32_t loops = 0;
+            for (const RecordedRegion::Curve& curve : region.curves) loops += curve.closed ? 1 : 0;
+            if (loops != region.loops) problem(name + " says " + std::to_string(region.loops) + " loops, its curves hold " + std::to_string(loops));
+            if (!(region.curve_length >= 0) || !(region.coplanar_area >= 0)) problem(name + " has a negative or NaN measure");
+            for (const std::uint32_t id : region.predecessors) {
+                if (std::find(previous_ids.begin(), previous_ids.end(), id) == previous_ids.end()) {
+                    problem(name + " continues region " + std::to_string(id) + ", which the previous frame does not have");
+                }
+            }
+        }
+        if (region_pairs != pairs) {
+            problem(where + ": the regions hold " + std::to_string(region_pairs) + " pairs, the frame " + std::to_string(pairs));
+        }
+        previous_ids = std::move(ids);
+    }
 }
 
 }  // namespace collidescope::recorder

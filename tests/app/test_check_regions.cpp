@@ -3,6 +3,7 @@
 // the end; usage errors.
 
 #include "support/cli_runner.hpp"
+#include "support/testmodels.hpp"
 #include "mesh/temp_files.hpp"
 
 #include "check_regions.hpp"
@@ -82,7 +83,27 @@ TEST(CheckRegions, SelfContactRegionsNameOneObject) {
     EXPECT_GT(self, 0u) << result.out.substr(0, 500);
 }
 
-TEST(CheckRegions, OneOutputOnStdoutAndNoMpi) {
+// An animated character of assimp-testmodels, with self-contact: regions within one body
+// part and between parts, each followed over the clip.
+TEST(CheckRegions, AnimatedCharacterHasSelfAndBetweenPartRegions) {
+    REQUIRE_TESTMODEL(model, "X/BCN_Epileptic.X");
+    TempDir dir;
+    const auto result = run_cli({"check", model.string(), "--self", "--fps", "30", "--frames", "30:50", "--regions",
+                                 "regions.jsonl", "--exit-zero", "-q"}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    std::size_t self = 0, between = 0;
+    std::uint32_t last_frame = 0;
+    for (const nlohmann::json& region : read_lines(dir.path() / "regions.jsonl")) {
+        (region["objects"][0] == region["objects"][1] ? self : between) += 1;
+        EXPECT_GE(region["frame"].get<std::uint32_t>(), last_frame);
+        last_frame = region["frame"].get<std::uint32_t>();
+        EXPECT_GE(region["curve_length"].get<double>(), 0.0);
+    }
+    EXPECT_GT(self, 0u);
+    EXPECT_GT(between, 0u);
+}
+
+TEST(CheckRegions, OnlyOneOutputOnStdout) {
     TempDir dir;
     const auto result = run_cli({"check", "--scene", "C:small", "--regions", "-", "--pairs", "-"}, dir.path());
     EXPECT_EQ(result.exit_code, 2);

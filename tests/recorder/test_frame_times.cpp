@@ -56,7 +56,7 @@ TEST(FrameTimes, TimesOfTheRecordedFramesComeBackWithFpsClipAndUpAxis) {
     EXPECT_EQ(rec.fps(), 24.0);
     EXPECT_EQ(rec.clip(), "Armature|Walk");
     EXPECT_EQ(rec.up_axis(), 'y');
-    EXPECT_EQ(rec.version_minor(), 4);
+    EXPECT_EQ(rec.version_minor(), recorder::schema::k_version_minor);  // 1.4 or later: the times
     EXPECT_TRUE(recorder::validate_recording(rec).problems.empty());
 }
 

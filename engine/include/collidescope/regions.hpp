@@ -59,7 +59,7 @@ struct Region {
 
     // Over time (RegionTracker::update fills these; 0 / empty before).
     std::uint32_t id = 0;                      ///< stable id, from 1
-    std::vector<std::uint32_t> predecessors;   ///< ids of last frame's regions it continues
+    std::vector<std::uint32_t> predecessors;   ///< ids of last frame's regions it continues, strongest first
 };
 
 /// What find_regions measures.
@@ -90,8 +90,9 @@ struct RegionTrack {
 /// Gives regions stable ids over consecutive frames: a region continues last frame's regions of
 /// the same objects that share a colliding triangle with it, or, when none does, whose boxes
 /// overlap its box. Of several successors, the one sharing the most triangles keeps the id and
-/// the others start tracks with split_from set; of several predecessors, the one sharing the
-/// most keeps its id and the others end with merged_into set.
+/// the others start tracks with split_from set (the predecessor they share most with); of
+/// several predecessors, the one sharing the most keeps its id and the others end with
+/// merged_into set (the first region of the frame that continues them).
 class RegionTracker {
 public:
     /// Assigns ids and predecessors to `regions` (find_regions of frame `frame`).

@@ -8,41 +8,42 @@
 #include <map>
 
 namespace collidescope {
-namespace {
-
-std::size_t shared(const std::vector<std::uint32_t>& x, const std::vector<std::uint32_t>& y) {
-    std::size_t count = 0;
-    for (auto i = x.begin(), j = y.begin(); i != x.end() && j != y.end();) {
-        if (*i < *j) {
-            ++i;
-        } else if (*j < *i) {
-            ++j;
-        } else {
-            ++count, ++i, ++j;
-        }
-    }
-    return count;
-}
-
-}  // namespace
-
 void RegionTracker::update(std::uint32_t frame, std::vector<Region>& regions) {
     if (m_any && frame != m_last_frame + 1) m_previous.clear();  // a gap: nothing continues
+
+    // Last frame's triangles, each with its region: (objects, side, triangle) -> previous index.
+    struct Owner {
+        std::uint64_t objects;  ///< obj_a << 32 | obj_b
+        std::uint64_t triangle; ///< side << 32 | triangle
+        std::size_t previous;
+        bool operator<(const Owner& o) const { return objects != o.objects ? objects < o.objects : triangle < o.triangle; }
+    };
+    std::vector<Owner> owners;
+    const auto objects_of = [](std::uint32_t a, std::uint32_t b) { return std::uint64_t(a) << 32 | b; };
+    for (std::size_t p = 0; p < m_previous.size(); ++p) {
+        const Previous& previous = m_previous[p];
+        for (const std::uint32_t t : previous.triangles_a) owners.push_back({objects_of(previous.obj_a, previous.obj_b), t, p});
+        for (const std::uint32_t t : previous.triangles_b) {
+            owners.push_back({objects_of(previous.obj_a, previous.obj_b), std::uint64_t(1) << 32 | t, p});
+        }
+    }
+    std::sort(owners.begin(), owners.end());
 
     // weight[r][p]: triangles shared (+1, so a box overlap alone weighs 1 and sharing wins).
     std::vector<std::map<std::size_t, std::size_t>> weight(regions.size());
     for (std::size_t r = 0; r < regions.size(); ++r) {
-        bool any_shared = false;
-        for (std::size_t p = 0; p < m_previous.size(); ++p) {
-            const Previous& previous = m_previous[p];
-            if (previous.obj_a != regions[r].obj_a || previous.obj_b != regions[r].obj_b) continue;
-            const std::size_t n = shared(regions[r].triangles_a, previous.triangles_a) +
-                                  shared(regions[r].triangles_b, previous.triangles_b);
-            if (n > 0) {
-                weight[r][p] = n + 1;
-                any_shared = true;
+        const std::uint64_t objects = objects_of(regions[r].obj_a, regions[r].obj_b);
+        const auto count = [&](std::uint64_t triangle) {
+            const Owner key{objects, triangle, 0};
+            for (auto it = std::lower_bound(owners.begin(), owners.end(), key);
+                 it != owners.end() && it->objects == objects && it->triangle == triangle; ++it) {
+                std::size_t& w = weight[r][it->previous];
+                w = w == 0 ? 2 : w + 1;
             }
-        }
+        };
+        for (const std::uint32_t t : regions[r].triangles_a) count(t);
+        for (const std::uint32_t t : regions[r].triangles_b) count(std::uint64_t(1) << 32 | t);
+        const bool any_shared = !weight[r].empty();
         if (any_shared) continue;
         for (std::size_t p = 0; p < m_previous.size(); ++p) {
             const Previous& previous = m_previous[p];
@@ -64,11 +65,14 @@ void RegionTracker::update(std::uint32_t frame, std::vector<Region>& regions) {
         Region& region = regions[r];
         region.predecessors.clear();
         std::size_t keeper = SIZE_MAX, keeper_weight = 0, strongest = SIZE_MAX, strongest_weight = 0;
+        std::vector<std::pair<std::size_t, std::size_t>> by_weight;  // (weight, previous), strongest first
         for (const auto& [p, w] : weight[r]) {
-            region.predecessors.push_back(m_previous[p].id);
+            by_weight.emplace_back(w, p);
             if (w > strongest_weight) strongest_weight = w, strongest = p;
             if (best_successor[p] == r && w > keeper_weight) keeper_weight = w, keeper = p;
         }
+        std::stable_sort(by_weight.begin(), by_weight.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+        for (const auto& [w, p] : by_weight) region.predecessors.push_back(m_previous[p].id);
         if (keeper != SIZE_MAX) {
             region.id = m_previous[keeper].id;
         } else {
@@ -90,11 +94,14 @@ void RegionTracker::update(std::uint32_t frame, std::vector<Region>& regions) {
             track.max_curve_length_frame = frame;
         }
     }
-    // Previous regions that passed their id to nobody but have a successor merged into it.
-    for (std::size_t p = 0; p < m_previous.size(); ++p) {
-        if (best_successor[p] == SIZE_MAX) continue;
-        const Region& successor = regions[best_successor[p]];
-        if (successor.id != m_previous[p].id) m_tracks[m_previous[p].id - 1].merged_into = successor.id;
+    // A previous region whose id goes on nowhere, but which a region continues, merged into the
+    // first such region (frame order; a reader of the recording can tell the same from the
+    // predecessors alone).
+    for (const Region& region : regions) {
+        for (const std::uint32_t id : region.predecessors) {
+            RegionTrack& ended = m_tracks[id - 1];
+            if (id != region.id && ended.last_frame != frame && ended.merged_into == 0) ended.merged_into = region.id;
+        }
     }
     m_previous.clear();
     for (std::size_t r = 0; r < regions.size(); ++r) {

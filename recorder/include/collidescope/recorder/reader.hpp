@@ -80,6 +80,10 @@ public:
 
     /// Colliding pairs of recorded frame `row` (< frames_complete()).
     std::vector<TrianglePair> pairs(std::uint64_t row) const;
+    /// True when the recording holds /regions (record --regions; schema 1.5).
+    bool has_regions() const;
+    /// Frame row `row`'s regions (empty without /regions).
+    std::vector<RecordedRegion> regions(std::uint64_t row) const;
     /// Number of colliding pairs per complete frame (from the offsets).
     std::vector<std::uint64_t> pair_counts() const;
     /// x y z per vertex of object `object` at row `row`; empty when --budget dropped them.

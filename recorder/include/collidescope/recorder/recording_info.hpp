@@ -22,6 +22,26 @@ struct ObjectInfo {
     std::vector<TopologyInfo> topologies;  ///< in order of from_frame
 };
 
+/// One region of one recorded frame (/regions, schema 1.5; docs/explanation/regions.md).
+struct RecordedRegion {
+    std::uint32_t id = 0;           ///< follows the region over frames, from 1
+    std::uint32_t obj_a = 0;
+    std::uint32_t obj_b = 0;        ///< == obj_a for self-contact
+    std::uint32_t pairs = 0;
+    std::uint32_t triangles_a = 0;  ///< colliding triangles on obj_a's side
+    std::uint32_t triangles_b = 0;  ///< on obj_b's (self: 0)
+    std::uint32_t loops = 0;        ///< closed curves
+    double curve_length = 0;
+    double coplanar_area = 0;
+    double box[6] = {0, 0, 0, 0, 0, 0};  ///< min x y z, max x y z
+    struct Curve {
+        bool closed = false;
+        std::vector<double> xyz;  ///< 3 per point
+    };
+    std::vector<Curve> curves;
+    std::vector<std::uint32_t> predecessors;  ///< last frame's region ids it continues, strongest first
+};
+
 /// A per-frame series (one dataset of /frames/ms, /frames/counts or a /frames details group).
 template <class T>
 struct Series {

@@ -22,7 +22,8 @@ inline constexpr std::int64_t k_version_major = 1;
 /// 1.3: the root attribute `interrupted` (a run stopped early by a signal).
 /// 1.4: /frames/time and the root attributes `fps`, `clip`, `up_axis`, each only when the
 /// scene's inputs say them (animated models, point caches); absent otherwise.
-inline constexpr std::int64_t k_version_minor = 4;
+/// 1.5: /regions and the root attribute `regions`, only in recordings made with `--regions`.
+inline constexpr std::int64_t k_version_minor = 5;
 
 // Root attributes.
 inline constexpr const char* k_attr_schema = "schema";
@@ -87,6 +88,24 @@ inline constexpr double k_depth_scale = 65535.0;
 inline constexpr const char* k_collisions = "/collisions";
 inline constexpr const char* k_pairs = "/collisions/pairs";           ///< (P, 4) uint32
 inline constexpr const char* k_pair_offsets = "/collisions/offsets";  ///< (F + 1) uint64
+/// Interpenetration regions (record --regions; schema 1.5): three CSR levels, frames to
+/// regions to curves to points, plus each region's predecessors (docs/explanation/regions.md).
+inline constexpr const char* k_regions = "/regions";
+inline constexpr const char* k_region_offsets = "/regions/offsets";  ///< (F + 1) uint64 into table rows
+/// (R, 7) uint32 per region: id, obj_a, obj_b, pairs, triangles_a, triangles_b, loops.
+inline constexpr const char* k_region_table = "/regions/table";
+/// (R, 8) float64 per region: curve_length, coplanar_area, box min x y z, box max x y z.
+inline constexpr const char* k_region_measures = "/regions/measures";
+inline constexpr const char* k_region_curve_offsets = "/regions/curve_offsets";  ///< (R + 1) uint64
+inline constexpr const char* k_region_curve_closed = "/regions/curve_closed";    ///< (C) uint8
+inline constexpr const char* k_region_point_offsets = "/regions/point_offsets";  ///< (C + 1) uint64
+inline constexpr const char* k_region_points = "/regions/points";                ///< (Q, 3) float64
+/// (R + 1) uint64 into predecessors.
+inline constexpr const char* k_region_predecessor_offsets = "/regions/predecessor_offsets";
+/// (K) uint32: ids of the previous frame's regions each region continues, strongest first.
+inline constexpr const char* k_region_predecessors = "/regions/predecessors";
+/// Root attribute: 1 when the recording holds /regions (absent otherwise).
+inline constexpr const char* k_attr_regions = "regions";
 inline constexpr const char* k_objects = "/objects";
 // Inside /objects/<k>/ (k = 0, 1, ... in input order):
 inline constexpr const char* k_triangles = "triangles";                  ///< (T, 3) uint32

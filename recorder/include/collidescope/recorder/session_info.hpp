@@ -20,6 +20,7 @@ struct SessionInfo {
     std::uint32_t frame_end = 0;            ///< one past the last scene frame to record
     std::string depth = "off";              ///< --depth: "off" or "every:N" (nothing to record before Mode 2)
     std::string gl_renderer;                ///< GL_RENDERER of the cull's context ("" without GPU cull)
+    bool regions = false;                   ///< record --regions: /regions per frame (schema 1.5)
     /// Pixels of one depth image (the cull's resolution squared): the depth pixels' chunk, so
     /// each image is one chunk, written once. 0: 65536.
     std::uint64_t depth_image_pixels = 0;

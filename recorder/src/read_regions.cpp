@@ -1,0 +1,88 @@
+// Reading /regions (schema 1.5): a frame's table rows, then each region's curves and their
+// points, and its predecessors, through three levels of CSR offsets, each checked against the
+// rows it points into.
+
+#include "recording_state.hpp"
+
+#include "collidescope/recorder/reader.hpp"
+
+namespace collidescope::recorder {
+namespace {
+
+// rows [first, first + count) of a dataset of `width` columns.
+template <class T>
+std::vector<T> read_block(const RecordingState& impl, const char* path, hid_t type, std::uint64_t first,
+                          std::uint64_t count, std::uint64_t width) {
+    const h5::Id d = impl.dataset(path);
+    const std::vector<hsize_t> dims = h5::shape(impl.where, d.get(), path);
+    const std::uint64_t columns = dims.size() == 2 ? dims[1] : 1;
+    if (dims.empty() || columns != width || first + count > dims[0]) {
+        impl.where.fail(std::string(path) + ": rows " + std::to_string(first) + ".." + std::to_string(first + count) +
+                        " of " + std::to_string(width) + " columns are not in the dataset (corrupt recording)");
+    }
+    std::vector<T> values(count * width);
+    if (count > 0) h5::read_rows(impl.where, d.get(), path, type, first, count, values.data());
+    return values;
+}
+
+// offsets[first .. first + count] (count + 1 entries), ascending and within `limit`.
+std::vector<std::uint64_t> read_offsets(const RecordingState& impl, const char* path, std::uint64_t first,
+                                        std::uint64_t count, const char* into) {
+    std::vector<std::uint64_t> offsets = read_block<std::uint64_t>(impl, path, H5T_NATIVE_UINT64, first, count + 1, 1);
+    const std::uint64_t limit = impl.rows(into);
+    for (std::size_t i = 0; i < offsets.size(); ++i) {
+        if ((i > 0 && offsets[i] < offsets[i - 1]) || offsets[i] > limit) {
+            impl.where.fail(std::string(path) + ": entry " + std::to_string(first + i) + " (" + std::to_string(offsets[i]) +
+                            ") is out of order or past " + into + " (corrupt recording)");
+        }
+    }
+    return offsets;
+}
+
+}  // namespace
+
+bool Recording::has_regions() const { return h5::exists(m_impl->file.get(), schema::k_region_offsets); }
+
+std::vector<RecordedRegion> Recording::regions(std::uint64_t row) const {
+    const RecordingState& impl = *m_impl;
+    impl.check_row(row);
+    if (!has_regions()) return {};
+    const std::vector<std::uint64_t> frame = read_offsets(impl, schema::k_region_offsets, row, 1, schema::k_region_table);
+    const std::uint64_t first = frame[0], count = frame[1] - frame[0];
+    const auto table = read_block<std::uint32_t>(impl, schema::k_region_table, H5T_NATIVE_UINT32, first, count, 7);
+    const auto measures = read_block<double>(impl, schema::k_region_measures, H5T_NATIVE_DOUBLE, first, count, 8);
+    const auto curves = read_offsets(impl, schema::k_region_curve_offsets, first, count, schema::k_region_curve_closed);
+    const auto preds =
+        read_offsets(impl, schema::k_region_predecessor_offsets, first, count, schema::k_region_predecessors);
+    const std::uint64_t curve_count = curves.back() - curves.front();
+    const auto closed =
+        read_block<std::uint8_t>(impl, schema::k_region_curve_closed, H5T_NATIVE_UINT8, curves.front(), curve_count, 1);
+    const auto points = read_offsets(impl, schema::k_region_point_offsets, curves.front(), curve_count, schema::k_region_points);
+    const auto xyz = read_block<double>(impl, schema::k_region_points, H5T_NATIVE_DOUBLE, points.front(),
+                                        points.back() - points.front(), 3);
+    const auto predecessors = read_block<std::uint32_t>(impl, schema::k_region_predecessors, H5T_NATIVE_UINT32,
+                                                        preds.front(), preds.back() - preds.front(), 1);
+    std::vector<RecordedRegion> out(count);
+    for (std::uint64_t r = 0; r < count; ++r) {
+        RecordedRegion& region = out[r];
+        const std::uint32_t* t = &table[7 * r];
+        region.id = t[0], region.obj_a = t[1], region.obj_b = t[2], region.pairs = t[3];
+        region.triangles_a = t[4], region.triangles_b = t[5], region.loops = t[6];
+        region.curve_length = measures[8 * r];
+        region.coplanar_area = measures[8 * r + 1];
+        for (int k = 0; k < 6; ++k) region.box[k] = measures[8 * r + 2 + k];
+        for (std::uint64_t c = curves[r]; c < curves[r + 1]; ++c) {
+            const std::uint64_t local = c - curves.front();
+            RecordedRegion::Curve curve;
+            curve.closed = closed[local] != 0;
+            curve.xyz.assign(xyz.begin() + 3 * (points[local] - points.front()),
+                             xyz.begin() + 3 * (points[local + 1] - points.front()));
+            region.curves.push_back(std::move(curve));
+        }
+        region.predecessors.assign(predecessors.begin() + (preds[r] - preds.front()),
+                                   predecessors.begin() + (preds[r + 1] - preds.front()));
+    }
+    return out;
+}
+
+}  // namespace collidescope::recorder
