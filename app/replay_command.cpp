@@ -304,7 +304,7 @@ Command add_replay_command(CLI::App& app) {
         ->capture_default_str();
     replay->add_option("--up", options->up, "The axis that points up on screen: x, y or z (default: the recording's, else z)")
         ->type_name("x|y|z");
-    replay->add_option("--show", options->show, "Layers: meshes,collisions,pcs,depth,overlay,timeline,legend | all | none")
+    replay->add_option("--show", options->show, "Layers: meshes,collisions,pcs,depth,overlay,timeline,legend,regions | all | none")
         ->type_name("LIST")
         ->capture_default_str();
     replay->add_option("--threads", options->threads, "Render threads, each with its own GL context; 0 = all hardware threads")

@@ -200,7 +200,7 @@ Camera make_camera(const CameraSpec& spec, const Bounds& bounds, const Rect& vie
     // Distance at which the bounding sphere fits the narrower of the two fields of view.
     const double fit = std::min(std::tan(half_fov), std::tan(half_fov) * aspect);
     const double distance = radius / std::sin(std::atan(fit)) * 1.02;
-    if (spec.kind == CameraSpec::Kind::Focus && focus != nullptr) {
+    if ((spec.kind == CameraSpec::Kind::Focus || spec.kind == CameraSpec::Kind::Region) && focus != nullptr) {
         frame_focus(camera, *focus, to_world(k_auto_direction, spec.up), fit, center, radius);
         return camera;
     }

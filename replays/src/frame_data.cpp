@@ -40,6 +40,7 @@ RecordingData::RecordingData(const std::filesystem::path& path)
     }
     m_modes.resize(frames);
     for (std::uint64_t row = 0; row < frames; ++row) m_modes[row] = frame_mode(m_methods[row], row_of(m_decision, row));
+    m_lives = region_lives(m_recording, frames);
 }
 
 std::vector<std::string> RecordingData::object_names() const {
@@ -153,6 +154,7 @@ FrameData RecordingData::load(std::uint64_t row, std::uint64_t ordinal) {
         for (const auto& [object, triangle] : m_recording.survivors(row)) mark(object, triangle, k_state_pcs);
     }
     data.colliding = m_recording.pairs(row);
+    if (m_recording.has_regions()) data.regions = m_recording.regions(row);
     for (const TrianglePair& pair : data.colliding) {
         mark(pair.obj_a, pair.tri_a, k_state_colliding);
         mark(pair.obj_b, pair.tri_b, k_state_colliding);

@@ -53,10 +53,21 @@ struct FrameData {
     std::vector<GpuPassInfo> passes;
     std::vector<GpuDepthImage> depth_images;
     std::vector<TrianglePair> colliding;  ///< the frame's colliding pairs, sorted
+    std::vector<recorder::RecordedRegion> regions;  ///< record --regions; empty otherwise
     std::uint64_t only_here = 0;  ///< --diff: pairs only this recording found
     bool pcs_recorded = false;    ///< survivors known (the frame ran the GPU cull)
     bool positions_dropped = false;
 };
+
+/// A region's lifetime over the recording's rows (first and last row, inclusive; record --regions).
+struct RegionLife {
+    std::uint32_t id = 0;
+    std::uint64_t first = 0;
+    std::uint64_t last = 0;
+};
+
+/// Lifetimes of every region in the first `rows` rows (empty without /regions), by id.
+std::vector<RegionLife> region_lives(const recorder::Recording& recording, std::uint64_t rows);
 
 /// Value of `name` in `values`, or NaN.
 double value_of(const NamedValues& values, const std::string& name);
@@ -78,6 +89,7 @@ public:
     const std::vector<std::string>& methods() const { return m_methods; }
     const std::vector<double>& totals() const { return m_totals; }  ///< ms.total per row
     const std::vector<int>& modes() const { return m_modes; }       ///< frame_mode per row
+    const std::vector<RegionLife>& lives() const { return m_lives; }  ///< every region's rows (record --regions)
     const std::vector<std::uint64_t>& pair_counts() const { return m_pair_counts; }
     std::size_t object_count() const { return m_recording.objects().size(); }
     std::vector<std::string> object_names() const;
@@ -106,6 +118,7 @@ private:
     std::vector<recorder::Series<std::uint64_t>> m_counts;
     std::vector<recorder::Series<double>> m_gpu, m_decision, m_aabb, m_hybrid;
     std::vector<double> m_totals;
+    std::vector<RegionLife> m_lives;
     std::vector<int> m_modes;
     std::vector<std::uint64_t> m_pair_counts;
     std::map<std::pair<std::uint32_t, std::size_t>, std::shared_ptr<const std::vector<TriIndices>>> m_topologies;

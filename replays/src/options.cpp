@@ -16,7 +16,7 @@ namespace {
 const std::pair<const char*, Layer> k_layer_names[] = {
     {"meshes", k_layer_meshes},   {"collisions", k_layer_collisions}, {"pcs", k_layer_pcs},
     {"depth", k_layer_depth},     {"overlay", k_layer_overlay},       {"timeline", k_layer_timeline},
-    {"legend", k_layer_legend},
+    {"legend", k_layer_legend},   {"regions", k_layer_regions},
 };
 
 std::vector<std::string> split(const std::string& text, char separator) {
@@ -59,7 +59,7 @@ unsigned parse_layers(const std::string& list) {
         }
         if (!known) {
             throw InputError("--show: unknown layer '" + name +
-                             "' (layers: meshes, collisions, pcs, depth, overlay, timeline, legend; or all, none)");
+                             "' (layers: meshes, collisions, pcs, depth, overlay, timeline, legend, regions; or all, none)");
         }
     }
     return layers;
@@ -68,7 +68,8 @@ unsigned parse_layers(const std::string& list) {
 CameraSpec parse_camera(const std::string& spec) {
     CameraSpec camera;
     const std::string usage =
-        "--camera must be auto, orbit, orbit:DEGREES_PER_FRAME, focus or fixed:EX,EY,EZ[:TX,TY,TZ], not '" + spec + "'";
+        "--camera must be auto, orbit, orbit:DEGREES_PER_FRAME, focus, region:ID or fixed:EX,EY,EZ[:TX,TY,TZ], not '" +
+        spec + "'";
     if (spec == "auto") return camera;
     if (spec == "focus") {
         camera.kind = CameraSpec::Kind::Focus;
@@ -82,6 +83,15 @@ CameraSpec parse_camera(const std::string& spec) {
     if (parts.size() == 2 && parts[0] == "orbit") {
         camera.kind = CameraSpec::Kind::Orbit;
         if (!parse_double(parts[1], camera.degrees_per_frame)) throw InputError(usage);
+        return camera;
+    }
+    if (parts.size() == 2 && parts[0] == "region") {
+        camera.kind = CameraSpec::Kind::Region;
+        double id = 0;
+        if (!parse_double(parts[1], id) || id < 1 || id != std::floor(id) || id > 4294967295.0) {
+            throw InputError(usage + ": a region id is a whole number from 1 (check --regions or inspect lists them)");
+        }
+        camera.region = static_cast<std::uint32_t>(id);
         return camera;
     }
     if ((parts.size() == 2 || parts.size() == 3) && parts[0] == "fixed") {

@@ -36,6 +36,7 @@ struct SessionView {
     const std::vector<double>* totals = nullptr;         ///< ms.total per row
     const std::vector<int>* modes = nullptr;             ///< frame_mode per row
     const std::vector<std::uint32_t>* indices = nullptr;  ///< scene frame per row
+    const std::vector<RegionLife>* lives = nullptr;        ///< regions' rows (record --regions)
 };
 
 /// "Mode 1 (AABB)", "Mode 2 (GPU cull)", "hybrid", "brute".
@@ -59,7 +60,9 @@ public:
     Overlay& operator=(const Overlay&) = delete;
 
     /// Draws the frame's annotation layers over the bound framebuffer.
-    void draw_frame(const FrameData& frame, const SessionView& session, const FrameLayout& layout, unsigned layers);
+    /// `camera` (the frame's) places the regions' curves; nullptr: no curves.
+    void draw_frame(const FrameData& frame, const SessionView& session, const FrameLayout& layout, unsigned layers,
+                    const Camera* camera = nullptr);
     /// Runs `build` (ImGui calls) twice and draws the second result: layouts that ImGui settles
     /// over one frame come out the same whatever this context drew before (determinism).
     void draw(const std::function<void()>& build);

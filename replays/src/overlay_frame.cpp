@@ -3,6 +3,7 @@
 
 #include "mesh_renderer.hpp"
 #include "overlay.hpp"
+#include "overlay_regions.hpp"
 #include "overlay_text.hpp"
 
 #include "collidescope/stats.hpp"
@@ -200,7 +201,7 @@ void depth_column(const FrameData& frame, const SessionView& session, const Rect
     ImGui::End();
 }
 
-void timeline(const FrameData& frame, const SessionView& session, const Rect& rect) {
+void timeline(const FrameData& frame, const SessionView& session, const Rect& rect, unsigned layers) {
     if (begin_window("timeline", rect)) {
         const std::vector<double>& totals = *session.totals;
         const double largest = totals.empty() ? 0.0 : *std::max_element(totals.begin(), totals.end());
@@ -219,6 +220,9 @@ void timeline(const FrameData& frame, const SessionView& session, const Rect& re
             const float x = at.x + step * float(row);
             draw->AddRectFilled(ImVec2(x, at.y + size.y - std::max(h, 1.0f)), ImVec2(x + std::max(step - 1, 1.0f), at.y + size.y),
                                 colour32(mode_colour((*session.modes)[row])));
+        }
+        if ((layers & k_layer_regions) != 0 && session.lives != nullptr) {
+            draw_region_lives(*session.lives, at.x, at.y, size.x, size.y, step);
         }
         const float x = at.x + step * (float(frame.row) + 0.5f);
         draw->AddLine(ImVec2(x, at.y), ImVec2(x, at.y + size.y), IM_COL32(255, 255, 255, 255), 2.0f);
@@ -251,6 +255,7 @@ void legend(const FrameData& frame, const SessionView& session, const Rect& rect
                 ImGui::TextDisabled("PCS: not recorded (%s)", frame.method.c_str());
             }
         }
+        if ((layers & k_layer_regions) != 0 && !frame.regions.empty()) swatch(region_colour(1), "curves (R#: region)");
         if (frame.positions_dropped) ImGui::TextDisabled("positions dropped (--budget)");
         ImGui::NewLine();
     }
@@ -260,7 +265,8 @@ void legend(const FrameData& frame, const SessionView& session, const Rect& rect
 
 }  // namespace
 
-void Overlay::draw_frame(const FrameData& frame, const SessionView& session, const FrameLayout& layout, unsigned layers) {
+void Overlay::draw_frame(const FrameData& frame, const SessionView& session, const FrameLayout& layout, unsigned layers,
+                         const Camera* camera) {
     std::vector<std::unique_ptr<Texture>> textures;
     if ((layers & k_layer_depth) != 0) {
         for (const GpuDepthImage& image : frame.depth_images) {
@@ -268,9 +274,10 @@ void Overlay::draw_frame(const FrameData& frame, const SessionView& session, con
         }
     }
     draw([&] {
+        if ((layers & k_layer_regions) != 0 && camera != nullptr) draw_region_curves(frame, *camera, layout.scene);
         if ((layers & k_layer_overlay) != 0) panel(frame, session, layout.panel);
         if ((layers & k_layer_depth) != 0) depth_column(frame, session, layout.depth, textures);
-        if ((layers & k_layer_timeline) != 0) timeline(frame, session, layout.timeline);
+        if ((layers & k_layer_timeline) != 0) timeline(frame, session, layout.timeline, layers);
         if ((layers & k_layer_legend) != 0) legend(frame, session, layout.legend, layers);
     });
 }

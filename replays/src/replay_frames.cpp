@@ -58,10 +58,38 @@ std::unique_ptr<OrderedVideo> open_ordered_video(const RecordingData& data, cons
     return std::make_unique<OrderedVideo>(open_video(settings));
 }
 
+// --camera region:ID: region ID's box in the frames it lives, framed as --camera focus frames
+// the collisions. An error when the recording has no regions or the id is not in the frames.
+std::vector<Framing> region_path(std::uint32_t id, RecordingData& data, const std::vector<std::uint64_t>& rows,
+                                 const Bounds& bounds) {
+    if (!data.recording().has_regions()) {
+        throw InputError(data.path() + ": --camera region:" + std::to_string(id) +
+                         " needs a recording made with record --regions (it has no /regions)");
+    }
+    std::vector<Bounds> boxes(rows.size());
+    std::uint32_t largest = 0;
+    bool seen = false;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        for (const recorder::RecordedRegion& region : data.recording().regions(rows[i])) {
+            largest = std::max(largest, region.id);
+            if (region.id != id) continue;
+            boxes[i].add(region.box[0], region.box[1], region.box[2]);
+            boxes[i].add(region.box[3], region.box[4], region.box[5]);
+            seen = true;
+        }
+    }
+    if (!seen) {
+        throw InputError(data.path() + ": --camera region:" + std::to_string(id) + ": no such region in the replayed frames" +
+                         (largest > 0 ? " (ids 1.." + std::to_string(largest) + ")" : " (they have no regions)"));
+    }
+    return focus_path(boxes, bounds);
+}
+
 // --camera focus: the region to frame in each replayed frame; empty for other cameras, and
 // when no replayed frame has collisions (the camera then frames the whole scene, as auto).
 std::vector<Framing> focus_of(const CameraSpec& camera, RecordingData& data, const std::vector<std::uint64_t>& rows,
                               const Bounds& bounds, ReplaySummary& summary) {
+    if (camera.kind == CameraSpec::Kind::Region) return region_path(camera.region, data, rows, bounds);
     if (camera.kind != CameraSpec::Kind::Focus) return {};
     const std::vector<Bounds> colliding = data.collision_bounds(rows);
     if (std::all_of(colliding.begin(), colliding.end(), [](const Bounds& box) { return box.empty(); })) {
@@ -154,6 +182,7 @@ SessionView session_view(const RecordingData& data) {
     session.totals = &data.totals();
     session.modes = &data.modes();
     session.indices = &data.indices();
+    session.lives = &data.lives();
     return session;
 }
 
@@ -233,7 +262,7 @@ RenderedFrame render_frame(RenderThread& thread, RecordingData& data, std::mutex
                                       plan.focus.empty() ? nullptr : &plan.focus[i]);
     thread.renderer->clear();
     thread.renderer->draw(out.frame, camera, options.layers);
-    thread.overlay->draw_frame(out.frame, plan.session, plan.layout, options.layers);
+    thread.overlay->draw_frame(out.frame, plan.session, plan.layout, options.layers, &camera);
     out.draw = clock.lap();
     out.rgba = thread.renderer->read_rgba();
     out.readback = clock.lap();

@@ -20,7 +20,8 @@ enum Layer : unsigned {
     k_layer_overlay = 16,    ///< the Dear ImGui panel: frame, mode, decision, times, PCS, queries, view matrix
     k_layer_timeline = 32,   ///< per-frame total time coloured by mode, current frame marked
     k_layer_legend = 64,     ///< the colour legend of the triangle states and objects
-    k_layer_all = 127,
+    k_layer_regions = 128,   ///< intersection curves as thick lines, each region labelled (record --regions)
+    k_layer_all = 255,
 };
 
 /// Parses a comma-separated list of layer names ("meshes,collisions,pcs,depth,overlay,timeline,
@@ -34,6 +35,7 @@ struct CameraSpec {
         Orbit,  ///< as Auto, turning about the vertical (z) axis around the bounds' centre
         Fixed,  ///< an explicit eye and target
         Focus,  ///< as Auto, framing each frame's colliding triangles, smoothed over frames (focus_path)
+        Region, ///< as Focus, framing one region (`region:ID`, record --regions) in the frames it lives
     };
     Kind kind = Kind::Auto;
     /// Orbit: degrees turned per replayed frame; 0 = one full turn over the replayed frames.
@@ -46,12 +48,14 @@ struct CameraSpec {
     /// `up_axis` when it has one; 0 = 'z'). Auto, Orbit and Focus look from above the front
     /// right in that frame; Orbit turns about it.
     char up = 0;
+    std::uint32_t region = 0;  ///< Region: the region's id
 };
 
 /// Parses `x`, `y` or `z` for CameraSpec::up. Throws InputError naming the text.
 char parse_up_axis(const std::string& text);
 
-/// Parses `auto`, `orbit`, `orbit:DEG` (degrees per frame), `focus` or `fixed:EX,EY,EZ[:TX,TY,TZ]`.
+/// Parses `auto`, `orbit`, `orbit:DEG` (degrees per frame), `focus`, `region:ID` or
+/// `fixed:EX,EY,EZ[:TX,TY,TZ]`.
 /// Throws InputError naming the spec.
 CameraSpec parse_camera(const std::string& spec);
 
