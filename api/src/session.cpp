@@ -9,6 +9,7 @@
 
 #include "collidescope/error.hpp"
 #include "collidescope/pipeline.hpp"
+#include "collidescope/regions.hpp"
 #include "collidescope/stats_json.hpp"
 
 #include <algorithm>
@@ -66,6 +67,8 @@ struct Session::Impl {
     StepStats step_stats;  ///< the flat part of result.stats (stats())
     std::vector<CollidingPair> pairs;
     std::unique_ptr<recorder::Recorder> recorder;
+    RegionTracker tracker;
+    std::vector<StepRegion> regions;  ///< SessionOptions::regions: the last step's
     bool closed = false;
 
     explicit Impl(SessionOptions options_in)
@@ -74,7 +77,27 @@ struct Session::Impl {
     std::string label(std::uint32_t object) const { return api::object_label(object, names[object]); }
     void take_positions(std::span<const VertexView> positions);
     void start_recording_once();
+    void find_regions();
 };
+
+// The step's regions, followed from the last step's, as plain data.
+void Session::Impl::find_regions() {
+    std::vector<Region> found = collidescope::find_regions(frame, result.colliding_pairs);
+    tracker.update(result.stats.frame, found);
+    regions.clear();
+    for (const Region& r : found) {
+        StepRegion out{r.id, r.obj_a, r.obj_b, r.pairs, static_cast<std::uint32_t>(r.triangles_a.size()),
+                       static_cast<std::uint32_t>(r.triangles_b.size()), r.loops, r.curve_length, r.coplanar_area,
+                       {r.box.min().x(), r.box.min().y(), r.box.min().z()},
+                       {r.box.max().x(), r.box.max().y(), r.box.max().z()}, {}, r.predecessors};
+        for (const IntersectionCurve& curve : r.curves) {
+            StepCurve c{curve.closed, {}, curve.length};
+            for (const Vec3& p : curve.points) c.points.push_back({p.x(), p.y(), p.z()});
+            out.curves.push_back(std::move(c));
+        }
+        regions.push_back(std::move(out));
+    }
+}
 
 // Pending triangles take effect with the positions they come with: their indices are
 // checked against that vertex count, which then holds until the object's triangles change.
@@ -184,6 +207,7 @@ std::span<const CollidingPair> Session::step(std::span<const VertexView> positio
     impl.result = impl.pipeline.process(impl.frame);
     impl.step_stats = {impl.result.stats.frame, impl.result.stats.method, impl.result.stats.ms, impl.result.stats.counts};
     ++impl.frame.index;
+    if (impl.options.regions) impl.find_regions();
     impl.pairs.resize(impl.result.colliding_pairs.size());
     std::transform(impl.result.colliding_pairs.begin(), impl.result.colliding_pairs.end(), impl.pairs.begin(),
                    [](const TrianglePair& p) { return CollidingPair{p.obj_a, p.tri_a, p.obj_b, p.tri_b}; });
@@ -191,6 +215,7 @@ std::span<const CollidingPair> Session::step(std::span<const VertexView> positio
 }
 
 const StepStats& Session::stats() const { return m_impl->step_stats; }
+std::span<const StepRegion> Session::regions() const { return m_impl->regions; }
 std::string Session::stats_json() const { return collidescope::stats_json(m_impl->result.stats); }
 std::uint32_t Session::frame_count() const { return m_impl->frame.index; }
 std::uint32_t Session::object_count() const { return static_cast<std::uint32_t>(m_impl->names.size()); }

@@ -17,6 +17,7 @@ std::unique_ptr<recorder::Recorder> start_recording(const SessionOptions& option
     info.tool_version = COLLIDESCOPE_VERSION;
     info.git_revision = COLLIDESCOPE_GIT_REVISION;
     info.object_names = std::move(object_names);
+    info.regions = options.regions;
     recorder::RecorderConfig recorder_config;
     recorder_config.path = options.record;
     return std::make_unique<recorder::Recorder>(recorder_config, std::move(info), first_frame);

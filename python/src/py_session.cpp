@@ -25,9 +25,10 @@ struct PySession {
 
     PySession(const py::sequence& triangles, bool self_collision, const std::string& method, int threads,
               const std::optional<std::string>& record, const std::string& policy,
-              const std::optional<std::vector<std::string>>& object_names, const std::string& scene)
+              const std::optional<std::vector<std::string>>& object_names, const std::string& scene, bool regions)
         : session(SessionOptions{.method = method, .policy = policy, .self_collision = self_collision,
-                                 .threads = threads, .record = record.value_or(""), .scene = scene}) {
+                                 .threads = threads, .record = record.value_or(""), .scene = scene,
+                                 .regions = regions}) {
         if (object_names && object_names->size() != triangles.size()) {
             throw py::value_error("names: " + std::to_string(object_names->size()) + " names for " +
                                   std::to_string(triangles.size()) + " objects");
@@ -38,6 +39,39 @@ struct PySession {
             session.add_object(std::span<const std::array<std::uint32_t, 3>>(indices), name);
             names.push_back(std::move(name));
         }
+    }
+
+    // The last step's regions: a list of dicts, the names of Recording.regions plus "curves"
+    // ((closed, (N, 3) float64 points) each) and "predecessors".
+    py::list regions() const {
+        py::list out;
+        for (const StepRegion& r : session.regions()) {
+            py::dict region;
+            region["id"] = r.id;
+            region["obj_a"] = r.obj_a;
+            region["obj_b"] = r.obj_b;
+            region["pairs"] = r.pairs;
+            region["triangles_a"] = r.triangles_a;
+            region["triangles_b"] = r.triangles_b;
+            region["loops"] = r.loops;
+            region["curve_length"] = r.curve_length;
+            region["coplanar_area"] = r.coplanar_area;
+            region["box_min"] = py::make_tuple(r.box_min[0], r.box_min[1], r.box_min[2]);
+            region["box_max"] = py::make_tuple(r.box_max[0], r.box_max[1], r.box_max[2]);
+            py::list curves;
+            for (const StepCurve& curve : r.curves) {
+                py::array_t<double> points({static_cast<py::ssize_t>(curve.points.size()), py::ssize_t{3}});
+                auto view = points.mutable_unchecked<2>();
+                for (std::size_t p = 0; p < curve.points.size(); ++p) {
+                    for (py::ssize_t c = 0; c < 3; ++c) view(static_cast<py::ssize_t>(p), c) = curve.points[p][std::size_t(c)];
+                }
+                curves.append(py::make_tuple(curve.closed, std::move(points)));
+            }
+            region["curves"] = std::move(curves);
+            region["predecessors"] = py::cast(r.predecessors);
+            out.append(std::move(region));
+        }
+        return out;
     }
 
     void set_triangles(std::size_t object, const py::handle& triangles) {
@@ -90,7 +124,7 @@ struct PySession {
 constexpr const char* k_doc = R"(Collision detection called from your own loop.
 
 Session(triangles, self_collision=False, method="adaptive", threads=0, record=None,
-        policy="cost", names=None, scene="session")
+        policy="cost", names=None, scene="session", regions=False)
 
 triangles: one (T_i, 3) integer array per object (vertex indices), declared once.
 step(positions): one (V_i, 3) float32 or float64 array per object, any layout; a float64
@@ -100,6 +134,7 @@ returns the frame's colliding pairs as an (N, 4) int64 array of (objA, triA, obj
 sorted as `collidescope check --pairs`. The GIL is released while the engine runs.
 stats: the last frame's stats as a dict with the names of `check --stats` (None before a step).
 record: an .h5 path; the file `collidescope record` writes (replay, inspect, collidescope.open).
+regions: find each step's interpenetration regions and follow them (regions(); recorded too).
 close() (or leaving a `with` block) finishes the recording.)";
 
 // The benchmark's C++ side (bench/scripts/session_step.py): steps `session` through `frames` (each a
@@ -130,16 +165,20 @@ std::vector<double> cpp_step_times(PySession& session, const py::sequence& frame
 void bind_session(py::module_& m) {
     py::class_<PySession>(m, "Session", k_doc)
         .def(py::init<const py::sequence&, bool, const std::string&, int, const std::optional<std::string>&,
-                      const std::string&, const std::optional<std::vector<std::string>>&, const std::string&>(),
+                      const std::string&, const std::optional<std::vector<std::string>>&, const std::string&, bool>(),
              py::arg("triangles"), py::arg("self_collision") = false, py::arg("method") = "adaptive",
              py::arg("threads") = 0, py::arg("record") = py::none(), py::arg("policy") = "cost",
-             py::arg("names") = py::none(), py::arg("scene") = "session")
+             py::arg("names") = py::none(), py::arg("scene") = "session", py::arg("regions") = false)
         .def("set_triangles", &PySession::set_triangles, py::arg("object"), py::arg("triangles"),
              "Replaces an object's triangles (a topology change) from the next step on, whose positions "
              "may then have another vertex count.")
         .def("step", &PySession::step, py::arg("positions"),
              "Runs one frame; returns the (N, 4) int64 array of colliding pairs, sorted.")
         .def_property_readonly("stats", &PySession::stats, "The last frame's stats (check --stats names), or None.")
+        .def("regions", &PySession::regions,
+             "The last step's interpenetration regions (Session(..., regions=True)), as check --regions reports them: "
+             "a list of dicts (id, obj_a, obj_b, pairs, triangles_a, triangles_b, loops, curve_length, coplanar_area, "
+             "box_min, box_max, curves: [(closed, (N, 3) points)], predecessors); [] without regions.")
         .def_property_readonly("frame", [](const PySession& s) { return s.session.frame_count(); },
                                "Frames stepped so far (the next frame's number).")
         .def_property_readonly("objects", [](const PySession& s) { return s.names.size(); }, "Objects declared.")

@@ -140,3 +140,26 @@ def test_the_options_in_the_issue_s_order():
     pairs = by_position.step(positions)
     assert len(pairs) > 0 and np.array_equal(pairs, by_name.step(positions))
     assert (pairs[:, 0] == pairs[:, 2]).any()  # self-collision pairs are there
+
+
+
+def test_session_regions_equal_check_regions(cli):
+    """Session(regions=True).regions() after each step holds what `check --regions` writes."""
+    import json
+    from conftest import run_cli
+    scene = collidescope.scene("C:small")
+    session = collidescope.Session(scene.triangles(), method="aabb", regions=True)
+    got = []
+    for frame in range(len(scene)):
+        session.step(scene.positions(frame))
+        for region in session.regions():
+            assert all(points.shape[1] == 3 for _, points in region["curves"])
+            got.append((frame, region["id"], region["pairs"], region["curve_length"], len(region["curves"]),
+                        list(region["predecessors"])))
+    code, out, err = run_cli(cli, "check", "--scene", "C:small", "--method", "aabb", "--regions", "-", "--exit-zero", "-q")
+    assert code == 0, err
+    lines = [json.loads(line) for line in out.splitlines()]
+    assert lines, "C:small has regions"
+    assert got == [(l["frame"], l["region"], l["pairs"], l["curve_length"], len(l["curves"]), l["predecessors"])
+                   for l in lines]
+    assert collidescope.Session(scene.triangles()).regions() == []

@@ -17,6 +17,7 @@
 /// Not thread-safe: one thread drives a session; the engine parallelises inside step(). A
 /// moved-from session may only be destroyed or assigned to.
 
+#include "collidescope/step_regions.hpp"
 #include "collidescope/step_stats.hpp"
 #include "collidescope/vertex_view.hpp"
 
@@ -44,6 +45,9 @@ struct SessionOptions {
     /// An HDF5 file to record every frame to, replaced if it exists ("" = no recording).
     std::string record;
     std::string scene = "session";  ///< the recording's `scene` attribute
+    /// Find each step's interpenetration regions and follow them over steps (regions()), and
+    /// record them when recording (`/regions`).
+    bool regions = false;
 };
 
 /// One colliding triangle pair: objects numbered from 0 in add_object order, triangles in the
@@ -95,6 +99,9 @@ public:
     /// The last step's profile: its stage times and counts, as `check --stats` reports them
     /// (zero before the first step).
     const StepStats& stats() const;
+    /// The last step's interpenetration regions (SessionOptions::regions; empty otherwise),
+    /// as `check --regions` reports them; the span lives until the next step or close.
+    std::span<const StepRegion> regions() const;
     /// The last step's stats as `check --stats` writes them, the methods' own parts included
     /// (hierarchies, GPU cull, decision): one JSON object, one line.
     std::string stats_json() const;
