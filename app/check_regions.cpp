@@ -4,42 +4,100 @@
 
 #include <nlohmann/json.hpp>
 
+#include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <string_view>
 
 namespace collidescope::app {
 namespace {
-
-nlohmann::ordered_json point(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
 
 std::string name_of(const std::vector<std::string>& names, std::uint32_t object) {
     return object < names.size() ? names[object] : "object" + std::to_string(object);
 }
 
+// JSON by hand: a region line holds every point of its curves, and building it as a JSON value
+// cost more than finding the regions. Numbers are the shortest text that reads back exactly.
+void number(std::string& out, double value) {
+    if (!std::isfinite(value)) {
+        out += "null";
+        return;
+    }
+    char text[32];
+    const auto result = std::to_chars(text, text + sizeof text, value);
+    out.append(text, result.ptr);
+    // JSON readers take "1e-05" and "3"; nlohmann wrote 3.0 for a double, so keep a point.
+    if (std::string_view(text, static_cast<std::size_t>(result.ptr - text)).find_first_of(".eE") == std::string_view::npos) {
+        out += ".0";
+    }
+}
+
+void number(std::string& out, std::uint64_t value) {
+    char text[24];
+    const auto result = std::to_chars(text, text + sizeof text, value);
+    out.append(text, result.ptr);
+}
+
+void point(std::string& out, const Vec3& p) {
+    out += '[';
+    number(out, p.x());
+    out += ',';
+    number(out, p.y());
+    out += ',';
+    number(out, p.z());
+    out += ']';
+}
+
 }  // namespace
 
 std::string region_json(std::uint32_t frame, const Region& region, const std::vector<std::string>& names) {
-    nlohmann::ordered_json curves = nlohmann::ordered_json::array();
-    for (const IntersectionCurve& curve : region.curves) {
-        nlohmann::ordered_json points = nlohmann::ordered_json::array();
-        for (const Vec3& p : curve.points) points.push_back(point(p));
-        curves.push_back({{"closed", curve.closed}, {"length", curve.length}, {"points", std::move(points)}});
+    std::string out = "{\"frame\":";
+    number(out, std::uint64_t{frame});
+    out += ",\"region\":";
+    number(out, std::uint64_t{region.id});
+    out += ",\"objects\":[";
+    number(out, std::uint64_t{region.obj_a});
+    out += ',';
+    number(out, std::uint64_t{region.obj_b});
+    out += "],\"names\":[" + nlohmann::json(name_of(names, region.obj_a)).dump() + "," +
+           nlohmann::json(name_of(names, region.obj_b)).dump() + "],\"pairs\":";
+    number(out, std::uint64_t{region.pairs});
+    out += ",\"triangles\":[";
+    number(out, std::uint64_t{region.triangles_a.size()});
+    out += ',';
+    number(out, std::uint64_t{region.triangles_b.size()});
+    out += "],\"loops\":";
+    number(out, std::uint64_t{region.loops});
+    out += ",\"curve_length\":";
+    number(out, region.curve_length);
+    out += ",\"coplanar_area\":";
+    number(out, region.coplanar_area);
+    out += ",\"box\":[";
+    point(out, region.box.min());
+    out += ',';
+    point(out, region.box.max());
+    out += "],\"predecessors\":[";
+    for (std::size_t k = 0; k < region.predecessors.size(); ++k) {
+        if (k > 0) out += ',';
+        number(out, std::uint64_t{region.predecessors[k]});
     }
-    const nlohmann::ordered_json object = {
-        {"frame", frame},
-        {"region", region.id},
-        {"objects", {region.obj_a, region.obj_b}},
-        {"names", {name_of(names, region.obj_a), name_of(names, region.obj_b)}},
-        {"pairs", region.pairs},
-        {"triangles", {region.triangles_a.size(), region.triangles_b.size()}},
-        {"loops", region.loops},
-        {"curve_length", region.curve_length},
-        {"coplanar_area", region.coplanar_area},
-        {"box", {point(region.box.min()), point(region.box.max())}},
-        {"predecessors", region.predecessors},
-        {"curves", std::move(curves)},
-    };
-    return object.dump();
+    out += "],\"curves\":[";
+    for (std::size_t c = 0; c < region.curves.size(); ++c) {
+        const IntersectionCurve& curve = region.curves[c];
+        out += c > 0 ? ",{\"closed\":" : "{\"closed\":";
+        out += curve.closed ? "true" : "false";
+        out += ",\"length\":";
+        number(out, curve.length);
+        out += ",\"points\":[";
+        for (std::size_t k = 0; k < curve.points.size(); ++k) {
+            if (k > 0) out += ',';
+            point(out, curve.points[k]);
+        }
+        out += "]}";
+    }
+    out += "]}";
+    return out;
 }
 
 void RegionsWriter::on_frame(const FrameReport& report) {

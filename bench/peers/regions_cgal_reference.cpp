@@ -1,6 +1,7 @@
 // Intersection curves against CGAL's Polygon_mesh_processing::surface_intersection (issue 38's
-// independent reference), on meshes whose curves CGAL computes: closed spheres and tori, and
-// wavy sheets, crossing at random placements (seeded). For each case: our curves (find_regions
+// independent reference), on meshes whose curves CGAL computes: closed spheres and tori, wavy
+// sheets, and a model (glmark2-data's bunny, scaled to the scene) against a sphere, crossing at
+// random placements (seeded). For each case: our curves (find_regions
 // on the exact pair list) and CGAL's polylines as point sets, the largest distance from a point
 // of either to the other's segments, over the scene's size; the curves' total lengths; and the
 // number of closed curves. Prints a table; exit 1 when a distance exceeds 1e-9 of the scene's
@@ -8,6 +9,7 @@
 //
 // Usage: regions_cgal_reference [cases (default 40)] [seed (default 38)]
 
+#include "collidescope/mesh.hpp"
 #include "collidescope/pipeline.hpp"
 #include "collidescope/regions.hpp"
 #include "datasets/shapes.hpp"
@@ -138,6 +140,16 @@ int main(int argc, char** argv) {
     std::printf("regions_cgal_reference: %d cases, seed %u\n", cases, seed);
     std::printf("%-4s %-16s %6s %6s %8s %8s %12s %12s %10s\n", "case", "meshes", "loops", "cgal", "ours", "cgal",
                 "ours-cgal", "cgal-ours", "len diff");
+    // The model: the bunny, scaled into [-1, 1]^3 (glmark2-data; skipped with a note without it).
+    MeshData bunny;
+    try {
+        bunny = read_mesh_file("/usr/share/glmark2/models/bunny.obj");
+        Eigen::AlignedBox3d box;
+        for (const Vec3& v : bunny.vertices) box.extend(v);
+        for (Vec3& v : bunny.vertices) v = 2.0 * (v - box.center()) / box.sizes().maxCoeff();
+    } catch (const std::exception& error) {
+        std::printf("no model case: %s\n", error.what());
+    }
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> unit(-1, 1);
     int failures = 0;
@@ -145,7 +157,7 @@ int main(int argc, char** argv) {
         const Vec3 offset(0.6 * unit(rng), 0.6 * unit(rng), 0.6 * unit(rng));
         std::vector<MeshData> meshes;
         const char* kind = nullptr;
-        switch (c % 3) {
+        switch (bunny.vertices.empty() ? c % 3 : c % 4) {
             case 0:
                 meshes = {sphere(24 + 8 * (c % 4), Vec3::Zero(), 1.0), sphere(30, offset + Vec3(1.0, 0, 0), 0.8)};
                 kind = "sphere/sphere";
@@ -154,9 +166,13 @@ int main(int argc, char** argv) {
                 meshes = {torus(64, 16, Vec3::Zero(), 1.2, 0.35, 0.0), sphere(32, offset + Vec3(1.2, 0, 0), 0.6)};
                 kind = "torus/sphere";
                 break;
-            default:
+            case 2:
                 meshes = {wavy_sheet(40, 0, 0.3, unit(rng)), torus(48, 12, offset, 1.0, 0.3, 0.5 + unit(rng))};
                 kind = "sheet/torus";
+                break;
+            default:
+                meshes = {bunny, sphere(40, offset * 0.8, 0.45)};
+                kind = "bunny/sphere";
                 break;
         }
         Pipeline pipeline({"aabb", false, 1});

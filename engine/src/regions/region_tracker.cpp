@@ -5,6 +5,7 @@
 #include "collidescope/regions.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace collidescope {
@@ -28,6 +29,11 @@ void RegionTracker::update(std::uint32_t frame, std::vector<Region>& regions) {
         }
     }
     std::sort(owners.begin(), owners.end());
+    std::vector<std::pair<std::pair<std::uint64_t, double>, std::size_t>> by_box;  // ((objects, box min x), previous)
+    for (std::size_t p = 0; p < m_previous.size(); ++p) {
+        by_box.push_back({{objects_of(m_previous[p].obj_a, m_previous[p].obj_b), m_previous[p].box.min().x()}, p});
+    }
+    std::sort(by_box.begin(), by_box.end());
 
     // weight[r][p]: triangles shared (+1, so a box overlap alone weighs 1 and sharing wins).
     std::vector<std::map<std::size_t, std::size_t>> weight(regions.size());
@@ -45,12 +51,12 @@ void RegionTracker::update(std::uint32_t frame, std::vector<Region>& regions) {
         for (const std::uint32_t t : regions[r].triangles_b) count(std::uint64_t(1) << 32 | t);
         const bool any_shared = !weight[r].empty();
         if (any_shared) continue;
-        for (std::size_t p = 0; p < m_previous.size(); ++p) {
-            const Previous& previous = m_previous[p];
-            if (previous.obj_a == regions[r].obj_a && previous.obj_b == regions[r].obj_b &&
-                previous.box.intersects(regions[r].box)) {
-                weight[r][p] = 1;
-            }
+        // Boxes: last frame's regions of the same objects, by the low x of their boxes.
+        const auto first = std::lower_bound(by_box.begin(), by_box.end(), objects,
+                                            [](const auto& entry, std::uint64_t key) { return entry.first.first < key; });
+        for (auto it = first; it != by_box.end() && it->first.first == objects; ++it) {
+            if (it->first.second > regions[r].box.max().x()) break;
+            if (m_previous[it->second].box.intersects(regions[r].box)) weight[r][it->second] = 1;
         }
     }
     // Each previous region's strongest successor; each region's strongest predecessor among
