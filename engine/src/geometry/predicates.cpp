@@ -12,6 +12,7 @@
 
 #include "collidescope/geometry.hpp"
 #include "geometry/adjacent_filter.hpp"
+#include "geometry/exact_determinant.hpp"
 #include "geometry/expansion.hpp"
 #include "geometry/orient2d_filter.hpp"
 
@@ -132,29 +133,11 @@ bool extruded_along_axis(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3
 /// Exact sign of the 3x3 determinant of rows[i][k] - shift[k] (shift = 0 when null), with
 /// GMP rationals: any finite doubles, no underflow or overflow possible.
 int determinant3_sign_gmp(const double rows[3][3], const double* shift) {
-    mpq_t m[3][3], offset, t0, t1, det;
-    mpq_inits(offset, t0, t1, det, nullptr);
-    for (int i = 0; i < 3; ++i)
-        for (int k = 0; k < 3; ++k) {
-            mpq_init(m[i][k]);
-            mpq_set_d(m[i][k], rows[i][k]);
-            if (shift) {
-                mpq_set_d(offset, shift[k]);
-                mpq_sub(m[i][k], m[i][k], offset);
-            }
-        }
-    for (int k = 0; k < 3; ++k) {  // expansion along row 0, cyclic cofactors
-        const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-        mpq_mul(t0, m[1][k1], m[2][k2]);
-        mpq_mul(t1, m[1][k2], m[2][k1]);
-        mpq_sub(t0, t0, t1);
-        mpq_mul(t0, t0, m[0][k]);
-        mpq_add(det, det, t0);
-    }
+    mpq_t det;
+    mpq_init(det);
+    determinant3_gmp(rows, shift, det);
     const int s = mpq_sgn(det);
-    for (auto& row : m)
-        for (auto& cell : row) mpq_clear(cell);
-    mpq_clears(offset, t0, t1, det, nullptr);
+    mpq_clear(det);
     return s;
 }
 

@@ -5,6 +5,8 @@
 
 #include "edge_crossing.hpp"
 
+#include "geometry/exact_determinant.hpp"
+
 #include <Eigen/Geometry>
 #include <gmp.h>
 
@@ -33,30 +35,11 @@ Determinant determinant(const std::array<Vec3, 3>& plane, const Vec3& point) {
 
 // The exact determinant of (plane, point) as a rational.
 void exact_determinant(const std::array<Vec3, 3>& plane, const Vec3& point, mpq_t out) {
-    mpq_t m[3][3], t0, t1;
-    mpq_inits(t0, t1, nullptr);
-    const Vec3* rows[3] = {&plane[1], &plane[2], &point};
-    for (int i = 0; i < 3; ++i) {
-        for (int k = 0; k < 3; ++k) {
-            mpq_init(m[i][k]);
-            mpq_set_d(m[i][k], (*rows[i])[k]);
-            mpq_set_d(t0, plane[0][k]);
-            mpq_sub(m[i][k], m[i][k], t0);
-        }
-    }
-    mpq_set_ui(out, 0, 1);
-    for (int k = 0; k < 3; ++k) {
-        const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-        mpq_mul(t0, m[0][k1], m[1][k2]);
-        mpq_mul(t1, m[0][k2], m[1][k1]);
-        mpq_sub(t0, t0, t1);
-        mpq_mul(t0, t0, m[2][k]);
-        mpq_add(out, out, t0);
-    }
-    for (auto& row : m) {
-        for (auto& cell : row) mpq_clear(cell);
-    }
-    mpq_clears(t0, t1, nullptr);
+    const double rows[3][3] = {{plane[1].x(), plane[1].y(), plane[1].z()},
+                               {plane[2].x(), plane[2].y(), plane[2].z()},
+                               {point.x(), point.y(), point.z()}};
+    const double shift[3] = {plane[0].x(), plane[0].y(), plane[0].z()};
+    determinant3_gmp(rows, shift, out);
 }
 
 }  // namespace
