@@ -12,6 +12,7 @@
 #include "collidescope/mesh.hpp"
 #include "collidescope/pipeline.hpp"
 #include "collidescope/regions.hpp"
+#include "datasets/generated_source.hpp"
 #include "datasets/shapes.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -43,39 +44,27 @@ MeshData sphere(std::uint32_t segments, const Vec3& centre, double radius) {
 
 MeshData torus(std::uint32_t around, std::uint32_t tube, const Vec3& centre, double R, double r, double tilt) {
     MeshData mesh;
-    for (std::uint32_t i = 0; i < around; ++i) {
-        for (std::uint32_t j = 0; j < tube; ++j) {
+    for (std::uint32_t j = 0; j < tube; ++j) {  // vertex (i, j) at j * around + i (torus_triangles)
+        for (std::uint32_t i = 0; i < around; ++i) {
             const double u = 2 * k_pi * i / around, v = 2 * k_pi * (j + 0.37) / tube;
             const Vec3 p((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
             mesh.vertices.push_back(centre + Vec3(p.x(), std::cos(tilt) * p.y() - std::sin(tilt) * p.z(),
                                                   std::sin(tilt) * p.y() + std::cos(tilt) * p.z()));
         }
     }
-    const auto at = [&](std::uint32_t i, std::uint32_t j) { return (i % around) * tube + j % tube; };
-    for (std::uint32_t i = 0; i < around; ++i) {
-        for (std::uint32_t j = 0; j < tube; ++j) {
-            mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-            mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-        }
-    }
+    mesh.triangles = datasets::torus_triangles(around, tube);
     return mesh;
 }
 
 MeshData wavy_sheet(std::uint32_t cells, double z, double amplitude, double phase) {
     MeshData mesh;
-    for (std::uint32_t i = 0; i <= cells; ++i) {
-        for (std::uint32_t j = 0; j <= cells; ++j) {
+    for (std::uint32_t j = 0; j <= cells; ++j) {  // vertex (i, j) at j * (cells + 1) + i (grid_triangles)
+        for (std::uint32_t i = 0; i <= cells; ++i) {
             const double x = -2 + 4.0 * i / cells, y = -2 + 4.0 * j / cells;
             mesh.vertices.emplace_back(x, y, z + amplitude * std::sin(2 * x + phase) * std::cos(1.5 * y));
         }
     }
-    for (std::uint32_t i = 0; i < cells; ++i) {
-        for (std::uint32_t j = 0; j < cells; ++j) {
-            const std::uint32_t a = i * (cells + 1) + j, b = a + cells + 1;
-            mesh.triangles.push_back({a, b, b + 1});
-            mesh.triangles.push_back({a, b + 1, a + 1});
-        }
-    }
+    mesh.triangles = datasets::grid_triangles(cells + 1, cells + 1);
     return mesh;
 }
 

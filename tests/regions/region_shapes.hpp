@@ -6,6 +6,7 @@
 
 #include "collidescope/pipeline.hpp"
 #include "collidescope/regions.hpp"
+#include "datasets/generated_source.hpp"
 #include "datasets/shapes.hpp"
 
 #include <cmath>
@@ -27,20 +28,14 @@ inline MeshData sphere(std::uint32_t segments, std::uint32_t rings, const Vec3& 
 // A closed torus about the z axis (major radius R, minor r), `around` x `tube` vertices.
 inline MeshData torus(std::uint32_t around, std::uint32_t tube, double R, double r, double phase = 0.37) {
     MeshData mesh;
-    for (std::uint32_t i = 0; i < around; ++i) {
-        for (std::uint32_t j = 0; j < tube; ++j) {
+    for (std::uint32_t j = 0; j < tube; ++j) {  // vertex (i, j) at j * around + i (torus_triangles)
+        for (std::uint32_t i = 0; i < around; ++i) {
             const double u = 2 * k_pi * i / around, v = 2 * k_pi * (j + phase) / tube;
             mesh.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
                                        r * std::sin(v));
         }
     }
-    const auto at = [&](std::uint32_t i, std::uint32_t j) { return (i % around) * tube + j % tube; };
-    for (std::uint32_t i = 0; i < around; ++i) {
-        for (std::uint32_t j = 0; j < tube; ++j) {
-            mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-            mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-        }
-    }
+    mesh.triangles = datasets::torus_triangles(around, tube);
     return mesh;
 }
 
