@@ -88,7 +88,7 @@ nlohmann::ordered_json region_summary(const recorder::Recording& rec, const std:
     double longest = 0;
     std::uint32_t longest_id = 0, longest_frame = 0;
     for (std::uint64_t r = 0; r < rec.frames_complete(); ++r) {
-        const std::vector<recorder::RecordedRegion> regions = rec.regions(r);
+        const std::vector<recorder::RecordedRegion> regions = rec.regions(r, false);
         frames_with += regions.empty() ? 0 : 1;
         if (regions.size() > most) most = regions.size(), most_frame = indices[r];
         for (const recorder::RecordedRegion& region : regions) {

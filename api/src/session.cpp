@@ -80,12 +80,17 @@ struct Session::Impl {
     void find_regions();
 };
 
-// The step's regions, followed from the last step's, as plain data.
+// The step's regions, followed from the last step's, as plain data: the recorder's when it
+// records them (it found them in the step already), else found here.
 void Session::Impl::find_regions() {
-    std::vector<Region> found = collidescope::find_regions(frame, result.colliding_pairs);
-    tracker.update(result.stats.frame, found);
+    std::vector<Region> found;
+    if (!recorder) {
+        found = collidescope::find_regions(frame, result.colliding_pairs);
+        tracker.update(result.stats.frame, found);
+    }
+    const std::vector<Region>& step_regions = recorder ? recorder->last_regions() : found;
     regions.clear();
-    for (const Region& r : found) {
+    for (const Region& r : step_regions) {
         StepRegion out{r.id, r.obj_a, r.obj_b, r.pairs, static_cast<std::uint32_t>(r.triangles_a.size()),
                        static_cast<std::uint32_t>(r.triangles_b.size()), r.loops, r.curve_length, r.coplanar_area,
                        {r.box.min().x(), r.box.min().y(), r.box.min().z()},

@@ -43,7 +43,7 @@ std::vector<std::uint64_t> read_offsets(const RecordingState& impl, const char* 
 
 bool Recording::has_regions() const { return h5::exists(m_impl->file.get(), schema::k_region_offsets); }
 
-std::vector<RecordedRegion> Recording::regions(std::uint64_t row) const {
+std::vector<RecordedRegion> Recording::regions(std::uint64_t row, bool with_curves) const {
     const RecordingState& impl = *m_impl;
     impl.check_row(row);
     if (!has_regions()) return {};
@@ -51,15 +51,21 @@ std::vector<RecordedRegion> Recording::regions(std::uint64_t row) const {
     const std::uint64_t first = frame[0], count = frame[1] - frame[0];
     const auto table = read_block<std::uint32_t>(impl, schema::k_region_table, H5T_NATIVE_UINT32, first, count, 7);
     const auto measures = read_block<double>(impl, schema::k_region_measures, H5T_NATIVE_DOUBLE, first, count, 8);
-    const auto curves = read_offsets(impl, schema::k_region_curve_offsets, first, count, schema::k_region_curve_closed);
     const auto preds =
         read_offsets(impl, schema::k_region_predecessor_offsets, first, count, schema::k_region_predecessors);
-    const std::uint64_t curve_count = curves.back() - curves.front();
-    const auto closed =
-        read_block<std::uint8_t>(impl, schema::k_region_curve_closed, H5T_NATIVE_UINT8, curves.front(), curve_count, 1);
-    const auto points = read_offsets(impl, schema::k_region_point_offsets, curves.front(), curve_count, schema::k_region_points);
-    const auto xyz = read_block<double>(impl, schema::k_region_points, H5T_NATIVE_DOUBLE, points.front(),
-                                        points.back() - points.front(), 3);
+    // Curves: offsets per region into the curves, per curve into the points (read only when asked).
+    std::vector<std::uint64_t> curves(count + 1, 0), points{0};
+    std::vector<std::uint8_t> closed;
+    std::vector<double> xyz;
+    if (with_curves) {
+        curves = read_offsets(impl, schema::k_region_curve_offsets, first, count, schema::k_region_curve_closed);
+        const std::uint64_t curve_count = curves.back() - curves.front();
+        closed = read_block<std::uint8_t>(impl, schema::k_region_curve_closed, H5T_NATIVE_UINT8, curves.front(),
+                                          curve_count, 1);
+        points = read_offsets(impl, schema::k_region_point_offsets, curves.front(), curve_count, schema::k_region_points);
+        xyz = read_block<double>(impl, schema::k_region_points, H5T_NATIVE_DOUBLE, points.front(),
+                                 points.back() - points.front(), 3);
+    }
     const auto predecessors = read_block<std::uint32_t>(impl, schema::k_region_predecessors, H5T_NATIVE_UINT32,
                                                         preds.front(), preds.back() - preds.front(), 1);
     std::vector<RecordedRegion> out(count);

@@ -75,6 +75,7 @@ struct Recorder::State {
     bool finished = false;
     bool regions = false;        ///< SessionInfo::regions: find and follow them per frame
     RegionTracker tracker;
+    std::vector<Region> last_regions;  ///< the last frame's (last_regions())
 
     State(RecorderConfig config_in, const SessionInfo& session, const Frame& first_frame)
         : config(std::move(config_in)),
@@ -160,12 +161,14 @@ void Recorder::on_frame(const FrameReport& report) {
     m_state->rethrow_writer_error();
     FrameRecord record = m_state->copier.copy(report);
     if (m_state->regions) {
-        std::vector<Region> regions = find_regions(report.frame, report.colliding_pairs);
-        m_state->tracker.update(report.stats.frame, regions);
-        record.regions = flatten(regions);
+        m_state->last_regions = find_regions(report.frame, report.colliding_pairs);
+        m_state->tracker.update(report.stats.frame, m_state->last_regions);
+        record.regions = flatten(m_state->last_regions);
     }
     if (!m_state->queue.push(std::move(record))) m_state->rethrow_writer_error();
 }
+
+const std::vector<Region>& Recorder::last_regions() const { return m_state->last_regions; }
 
 RecordSummary Recorder::finish(const std::string& interrupted) {
     State& state = *m_state;

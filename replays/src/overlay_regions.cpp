@@ -31,7 +31,7 @@ std::vector<RegionLife> region_lives(const recorder::Recording& recording, std::
     std::vector<RegionLife> lives;
     if (!recording.has_regions()) return lives;
     for (std::uint64_t row = 0; row < rows; ++row) {
-        for (const recorder::RecordedRegion& region : recording.regions(row)) {
+        for (const recorder::RecordedRegion& region : recording.regions(row, false)) {
             if (region.id > lives.size()) lives.resize(region.id);
             RegionLife& life = lives[region.id - 1];
             if (life.id == 0) life = {region.id, row, row};

@@ -70,7 +70,7 @@ std::vector<Framing> region_path(std::uint32_t id, RecordingData& data, const st
     std::uint32_t largest = 0;
     bool seen = false;
     for (std::size_t i = 0; i < rows.size(); ++i) {
-        for (const recorder::RecordedRegion& region : data.recording().regions(rows[i])) {
+        for (const recorder::RecordedRegion& region : data.recording().regions(rows[i], false)) {
             largest = std::max(largest, region.id);
             if (region.id != id) continue;
             boxes[i].add(region.box[0], region.box[1], region.box[2]);

@@ -82,8 +82,9 @@ public:
     std::vector<TrianglePair> pairs(std::uint64_t row) const;
     /// True when the recording holds /regions (record --regions; schema 1.5).
     bool has_regions() const;
-    /// Frame row `row`'s regions (empty without /regions).
-    std::vector<RecordedRegion> regions(std::uint64_t row) const;
+    /// Frame row `row`'s regions (empty without /regions); `curves` false leaves each region's
+    /// curves empty and reads only the table, measures and predecessors (summaries).
+    std::vector<RecordedRegion> regions(std::uint64_t row, bool curves = true) const;
     /// Number of colliding pairs per complete frame (from the offsets).
     std::vector<std::uint64_t> pair_counts() const;
     /// x y z per vertex of object `object` at row `row`; empty when --budget dropped them.

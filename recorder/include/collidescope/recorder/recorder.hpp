@@ -7,6 +7,7 @@
 /// process leaves every frame flushed before it readable. Not thread-safe: one engine thread calls it.
 
 #include "collidescope/recorder/session_info.hpp"
+#include "collidescope/regions.hpp"
 
 #include "collidescope/trace.hpp"
 
@@ -60,6 +61,10 @@ public:
     /// signal that stopped the run early ("SIGINT"; "" = it ran to its last frame): the file is
     /// then marked partial (attribute `interrupted`). Throws InputError on any write failure.
     RecordSummary finish(const std::string& interrupted = {});
+    /// With SessionInfo::regions: the regions on_frame found and followed for the last frame
+    /// (what it recorded), so a caller that also wants them need not find them again; empty
+    /// before the first frame and without regions.
+    const std::vector<Region>& last_regions() const;
 
 private:
     struct State;
