@@ -47,7 +47,8 @@ Outputs (FILE may be - for stdout; logs and progress always go to stderr):
   --stats  JSON Lines, one object per frame: {"frame", "method", "ms": {...}, "counts": {...}}.
   --regions  JSON Lines, one object per interpenetration region per frame: {"frame", "region"
            (an id that follows the region over frames), "objects", "names", "pairs", "triangles",
-           "loops", "curve_length", "coplanar_area", "box", "predecessors", "curves": [{"closed",
+           "loops", "curve_length", "coplanar_area", "inside_area" ([a's inside b, b's inside a]),
+           "depth" (null where not defined), "box", "predecessors", "curves": [{"closed",
            "length", "points"}]}; then a line per region on stderr (docs/explanation/regions.md).
   A file output is written as FILE.partial, flushed after every frame, and renamed to FILE
   when the run completes: an interrupted run leaves only FILE.partial.

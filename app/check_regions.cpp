@@ -73,6 +73,16 @@ std::string region_json(std::uint32_t frame, const Region& region, const std::ve
     number(out, region.curve_length);
     out += ",\"coplanar_area\":";
     number(out, region.coplanar_area);
+    // Not defined (no closed object, or self-contact): null.
+    for (const auto& [key, value] : {std::pair{",\"inside_area\":[", region.inside_area_a}, std::pair{",", region.inside_area_b},
+                                     std::pair{"],\"depth\":", region.depth}}) {
+        out += key;
+        if (std::isnan(value)) {
+            out += "null";
+        } else {
+            number(out, value);
+        }
+    }
     out += ",\"box\":[";
     point(out, region.box.min());
     out += ',';
@@ -120,6 +130,10 @@ std::vector<std::string> RegionsWriter::summary_lines() const {
                       track.first_frame, track.last_frame, track.frames, track.frames == 1 ? "" : "s",
                       track.max_curve_length, track.max_curve_length_frame, track.max_pairs);
         std::string line = "region " + std::to_string(track.id) + ": " + objects + figures;
+        if (!std::isnan(track.max_depth)) {
+            std::snprintf(figures, sizeof figures, ", %.6g deep at most (frame %u)", track.max_depth, track.max_depth_frame);
+            line += figures;
+        }
         if (track.split_from != 0) line += "; split from region " + std::to_string(track.split_from);
         if (track.merged_into != 0) line += "; merged into region " + std::to_string(track.merged_into);
         lines.push_back(std::move(line));

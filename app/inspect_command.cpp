@@ -95,7 +95,12 @@ void print_text(const nlohmann::ordered_json& info) {
         std::cout << "regions: " << regions["ids"] << " over the run, on " << regions["frames_with_regions"]
                   << " frames, at most " << regions["max_per_frame"] << " in a frame (frame " << regions["max_frame"]
                   << "); longest curve " << regions["longest_curve"].get<double>() << " (region "
-                  << regions["longest_curve_region"] << ", frame " << regions["longest_curve_frame"] << ")\n";
+                  << regions["longest_curve_region"] << ", frame " << regions["longest_curve_frame"] << ")";
+        if (!regions["deepest"].is_null()) {
+            std::cout << "; deepest " << regions["deepest"].get<double>() << " (region " << regions["deepest_region"]
+                      << ", frame " << regions["deepest_frame"] << ")";
+        }
+        std::cout << "\n";
     }
     std::cout << "time per stage (ms):          median        total\n";
     for (const auto& [name, stage] : info["stages"].items()) {

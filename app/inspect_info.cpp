@@ -81,12 +81,14 @@ void add_time(const recorder::Recording& rec, nlohmann::ordered_json& out) {
 namespace {
 
 // /regions (record --regions): how many regions over the run, the most in one frame, and the
-// longest curve (its region and frame).
+// longest curve (its region and frame), and the deepest region (where a depth is defined).
 nlohmann::ordered_json region_summary(const recorder::Recording& rec, const std::vector<std::uint32_t>& indices) {
     std::set<std::uint32_t> ids;
     std::uint64_t most = 0, most_frame = 0, frames_with = 0;
     double longest = 0;
     std::uint32_t longest_id = 0, longest_frame = 0;
+    double deepest = -1;
+    std::uint32_t deepest_id = 0, deepest_frame = 0;
     for (std::uint64_t r = 0; r < rec.frames_complete(); ++r) {
         const std::vector<recorder::RecordedRegion> regions = rec.regions(r, false);
         frames_with += regions.empty() ? 0 : 1;
@@ -94,10 +96,18 @@ nlohmann::ordered_json region_summary(const recorder::Recording& rec, const std:
         for (const recorder::RecordedRegion& region : regions) {
             ids.insert(region.id);
             if (region.curve_length > longest) longest = region.curve_length, longest_id = region.id, longest_frame = indices[r];
+            if (region.depth > deepest) deepest = region.depth, deepest_id = region.id, deepest_frame = indices[r];
         }
     }
-    return {{"ids", ids.size()}, {"frames_with_regions", frames_with}, {"max_per_frame", most}, {"max_frame", most_frame},
-            {"longest_curve", longest}, {"longest_curve_region", longest_id}, {"longest_curve_frame", longest_frame}};
+    nlohmann::ordered_json out{{"ids", ids.size()},           {"frames_with_regions", frames_with},
+                               {"max_per_frame", most},       {"max_frame", most_frame},
+                               {"longest_curve", longest},    {"longest_curve_region", longest_id},
+                               {"longest_curve_frame", longest_frame}};
+    // null: no region had a depth (no closed object, self-contact only, or a 1.5 recording)
+    out["deepest"] = deepest >= 0 ? nlohmann::ordered_json(deepest) : nlohmann::ordered_json();
+    out["deepest_region"] = deepest_id;
+    out["deepest_frame"] = deepest_frame;
+    return out;
 }
 
 }  // namespace

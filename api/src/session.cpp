@@ -94,7 +94,8 @@ void Session::Impl::find_regions() {
         StepRegion out{r.id, r.obj_a, r.obj_b, r.pairs, static_cast<std::uint32_t>(r.triangles_a.size()),
                        static_cast<std::uint32_t>(r.triangles_b.size()), r.loops, r.curve_length, r.coplanar_area,
                        {r.box.min().x(), r.box.min().y(), r.box.min().z()},
-                       {r.box.max().x(), r.box.max().y(), r.box.max().z()}, {}, r.predecessors};
+                       {r.box.max().x(), r.box.max().y(), r.box.max().z()}, {}, r.predecessors,
+                       r.inside_area_a, r.inside_area_b, r.depth};
         for (const IntersectionCurve& curve : r.curves) {
             StepCurve c{curve.closed, {}, curve.length};
             for (const Vec3& p : curve.points) c.points.push_back({p.x(), p.y(), p.z()});

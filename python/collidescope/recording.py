@@ -16,16 +16,18 @@ METHOD_GROUPS = ("gpu", "aabb", "decision", "hybrid")
 CSR_OFFSETS = ("collisions/offsets", "gpu/pass_offsets", "gpu/survivor_offsets", "gpu/depth/image_offsets",
                "regions/offsets")
 
-# One row of Recording.regions(frame) (/regions/table and /regions/measures, schema 1.5).
+# One row of Recording.regions(frame) (/regions/table, /regions/measures and, from schema 1.6, /regions/penetration; the
+# inside areas and the depth from 1.6, NaN where not defined and in older recordings).
 REGION_DTYPE = np.dtype([("id", np.uint32), ("obj_a", np.uint32), ("obj_b", np.uint32), ("pairs", np.uint32),
                          ("triangles_a", np.uint32), ("triangles_b", np.uint32), ("loops", np.uint32),
                          ("curve_length", np.float64), ("coplanar_area", np.float64),
-                         ("box_min", np.float64, (3,)), ("box_max", np.float64, (3,))])
+                         ("box_min", np.float64, (3,)), ("box_max", np.float64, (3,)),
+                         ("inside_area_a", np.float64), ("inside_area_b", np.float64), ("depth", np.float64)])
 # One row of Recording.region_tracks().
 TRACK_DTYPE = np.dtype([("id", np.uint32), ("obj_a", np.uint32), ("obj_b", np.uint32), ("first_frame", np.int64),
                         ("last_frame", np.int64), ("frames", np.int64), ("max_curve_length", np.float64),
                         ("max_curve_length_frame", np.int64), ("max_pairs", np.int64), ("split_from", np.uint32),
-                        ("merged_into", np.uint32)])
+                        ("merged_into", np.uint32), ("max_depth", np.float64), ("max_depth_frame", np.int64)])
 
 
 class RecordingError(ValueError):
@@ -192,7 +194,8 @@ class Recording:
     def regions(self, frame):
         """FRAME's interpenetration regions as a numpy record array (REGION_DTYPE): id (follows
         the region over frames), obj_a, obj_b (equal for self-contact), pairs, triangles_a,
-        triangles_b, loops, curve_length, coplanar_area, box_min, box_max. Raises ValueError
+        triangles_b, loops, curve_length, coplanar_area, box_min, box_max, inside_area_a (obj_a's
+        surface inside obj_b), inside_area_b, depth (NaN where not defined). Raises ValueError
         when the recording has no regions (record it with --regions)."""
         first, end = self._region_rows(frame)
         r = self._file["regions"]
@@ -203,6 +206,11 @@ class Recording:
             out[name] = table[:, k]
         out["curve_length"], out["coplanar_area"] = measures[:, 0], measures[:, 1]
         out["box_min"], out["box_max"] = measures[:, 2:5], measures[:, 5:8]
+        if "penetration" in r:
+            penetration = r["penetration"][first:end]
+            out["inside_area_a"], out["inside_area_b"], out["depth"] = penetration[:, 0], penetration[:, 1], penetration[:, 2]
+        else:  # schema 1.5
+            out["inside_area_a"] = out["inside_area_b"] = out["depth"] = np.nan
         return out.view(np.recarray)
 
     def region_curves(self, frame):
@@ -235,7 +243,8 @@ class Recording:
     def region_tracks(self):
         """Every region over the run, one row per id (TRACK_DTYPE): objects, first and last
         frame, frames present, its longest curve and that frame, its most pairs, the region it
-        split from and the region it merged into (0: none), as `check --regions` reports them."""
+        split from and the region it merged into (0: none), its largest depth and that frame (NaN
+        and 0 where never defined), as `check --regions` reports them."""
         if not self.has_regions:
             raise ValueError("%s: no regions recorded (record with --regions)" % self.path)
         tracks = {}
@@ -248,12 +257,16 @@ class Recording:
                 if t is None:
                     t = tracks[i] = {"id": i, "obj_a": int(region.obj_a), "obj_b": int(region.obj_b),
                                      "first_frame": int(frame), "frames": 0, "max_curve_length": -1.0,
-                                     "max_pairs": 0, "split_from": int(before[0]) if len(before) else 0, "merged_into": 0}
+                                     "max_pairs": 0, "split_from": int(before[0]) if len(before) else 0, "merged_into": 0,
+                                     "max_depth": np.nan, "max_depth_frame": 0}
                 t["last_frame"] = int(frame)
                 t["frames"] += 1
                 t["max_pairs"] = max(t["max_pairs"], int(region.pairs))
                 if float(region.curve_length) > t["max_curve_length"]:
                     t["max_curve_length"], t["max_curve_length_frame"] = float(region.curve_length), int(frame)
+                depth = float(region.depth)
+                if not np.isnan(depth) and (np.isnan(t["max_depth"]) or depth > t["max_depth"]):
+                    t["max_depth"], t["max_depth_frame"] = depth, int(frame)
             # A previous id that goes on nowhere merged into the first region continuing it.
             ids = {int(region.id) for region in regions}
             for region, before in zip(regions, predecessors):

@@ -56,6 +56,9 @@ struct PySession {
             region["loops"] = r.loops;
             region["curve_length"] = r.curve_length;
             region["coplanar_area"] = r.coplanar_area;
+            region["inside_area_a"] = r.inside_area_a;
+            region["inside_area_b"] = r.inside_area_b;
+            region["depth"] = r.depth;
             region["box_min"] = py::make_tuple(r.box_min[0], r.box_min[1], r.box_min[2]);
             region["box_max"] = py::make_tuple(r.box_max[0], r.box_max[1], r.box_max[2]);
             py::list curves;
@@ -177,7 +180,7 @@ void bind_session(py::module_& m) {
         .def_property_readonly("stats", &PySession::stats, "The last frame's stats (check --stats names), or None.")
         .def("regions", &PySession::regions,
              "The last step's interpenetration regions (Session(..., regions=True)), as check --regions reports them: "
-             "a list of dicts (id, obj_a, obj_b, pairs, triangles_a, triangles_b, loops, curve_length, coplanar_area, "
+             "a list of dicts (id, obj_a, obj_b, pairs, triangles_a, triangles_b, loops, curve_length, coplanar_area, inside_area_a, inside_area_b, depth, "
              "box_min, box_max, curves: [(closed, (N, 3) points)], predecessors); [] without regions.")
         .def_property_readonly("frame", [](const PySession& s) { return s.session.frame_count(); },
                                "Frames stepped so far (the next frame's number).")

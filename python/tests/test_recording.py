@@ -176,6 +176,45 @@ def test_regions_equal_check_regions(tmp_path, cli):
         assert track.merged_into == int(match.group(7) or 0)
 
 
+def test_region_depths_and_inside_areas_and_a_1_5_recording(tmp_path, cli):
+    """The demo's torus (closed) goes into the sheet: record --regions holds each region's
+    inside areas and depth as `check --regions` prints them; a 1.5 recording (no
+    /regions/penetration) reads NaN there, in Python and in `inspect`."""
+    import json
+    import h5py
+    scene = ["--scene", "demo:small", "--frames", "8:14"]
+    path = tmp_path / "d.h5"
+    code, _, err = run_cli(cli, "record", *scene, "--regions", "-o", str(path), "-q")
+    assert code == 0, err
+    code, out, err = run_cli(cli, "check", *scene, "--regions", "-", "--exit-zero")
+    assert code == 0, err
+    lines = [json.loads(line) for line in out.splitlines()]
+    assert lines and all(line["depth"] is not None for line in lines)
+    with collidescope.open(str(path)) as rec:
+        got = [(float(r.inside_area_a), float(r.inside_area_b), float(r.depth))
+               for frame in rec.frames for r in rec.regions(frame)]
+        tracks = rec.region_tracks()
+    want = [(line["inside_area"][0] if line["inside_area"][0] is not None else np.nan,
+             line["inside_area"][1] if line["inside_area"][1] is not None else np.nan, line["depth"]) for line in lines]
+    np.testing.assert_array_equal(np.array(got), np.array(want))
+    assert max(d for _, _, d in got) > 0
+    assert np.isclose(tracks.max_depth.max(), max(d for _, _, d in got))
+    code, out, err = run_cli(cli, "inspect", str(path))
+    assert code == 0 and "deepest" in out, out + err
+    # The same file as schema 1.5 wrote it.
+    with h5py.File(str(path), "r+") as f:
+        del f["regions/penetration"]
+        f.attrs["schema_version_minor"] = 5
+    with collidescope.open(str(path)) as rec:
+        regions = rec.regions(rec.frames[2])
+        assert len(regions) and np.isnan(regions.depth).all() and np.isnan(regions.inside_area_a).all()
+        assert np.isnan(rec.region_tracks().max_depth).all()
+    code, out, err = run_cli(cli, "inspect", str(path))
+    assert code == 0 and "deepest" not in out, out + err
+    code, out, err = run_cli(cli, "validate", str(path))
+    assert code == 0, out + err
+
+
 def test_regions_absent_is_a_clear_error(tmp_path, cli):
     code, _, err = run_cli(cli, "record", "--scene", "C:small", "--frames", "0:2", "-o", str(tmp_path / "p.h5"), "-q")
     assert code == 0, err

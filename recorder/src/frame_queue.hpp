@@ -32,6 +32,7 @@ struct ObjectRecord {
 struct RegionsRecord {
     std::vector<std::uint32_t> table;            ///< 7 per region
     std::vector<double> measures;                ///< 8 per region
+    std::vector<double> penetration;             ///< 3 per region
     std::vector<std::uint64_t> curves;           ///< curves per region
     std::vector<std::uint8_t> closed;            ///< per curve
     std::vector<std::uint64_t> points;           ///< points per curve
@@ -39,7 +40,7 @@ struct RegionsRecord {
     std::vector<std::uint64_t> predecessor_counts;  ///< per region
     std::vector<std::uint32_t> predecessors;
     std::size_t bytes() const {
-        return table.size() * 4 + measures.size() * 8 + curves.size() * 8 + closed.size() + points.size() * 8 +
+        return table.size() * 4 + measures.size() * 8 + penetration.size() * 8 + curves.size() * 8 + closed.size() + points.size() * 8 +
                xyz.size() * 8 + predecessor_counts.size() * 8 + predecessors.size() * 4;
     }
 };

@@ -1,4 +1,4 @@
-// Reading /regions (schema 1.5): a frame's table rows, then each region's curves and their
+// Reading /regions (schema 1.5; /regions/penetration from 1.6): a frame's table rows, then each region's curves and their
 // points, and its predecessors, through three levels of CSR offsets, each checked against the
 // rows it points into.
 
@@ -51,6 +51,11 @@ std::vector<RecordedRegion> Recording::regions(std::uint64_t row, bool with_curv
     const std::uint64_t first = frame[0], count = frame[1] - frame[0];
     const auto table = read_block<std::uint32_t>(impl, schema::k_region_table, H5T_NATIVE_UINT32, first, count, 7);
     const auto measures = read_block<double>(impl, schema::k_region_measures, H5T_NATIVE_DOUBLE, first, count, 8);
+    // Schema 1.6; a 1.5 recording has none (NaN: not known).
+    const bool has_penetration = h5::exists(impl.file.get(), schema::k_region_penetration);
+    const auto penetration = has_penetration ? read_block<double>(impl, schema::k_region_penetration, H5T_NATIVE_DOUBLE,
+                                                                  first, count, 3)
+                                             : std::vector<double>{};
     const auto preds =
         read_offsets(impl, schema::k_region_predecessor_offsets, first, count, schema::k_region_predecessors);
     // Curves: offsets per region into the curves, per curve into the points (read only when asked).
@@ -77,6 +82,11 @@ std::vector<RecordedRegion> Recording::regions(std::uint64_t row, bool with_curv
         region.curve_length = measures[8 * r];
         region.coplanar_area = measures[8 * r + 1];
         for (int k = 0; k < 6; ++k) region.box[k] = measures[8 * r + 2 + k];
+        if (has_penetration) {
+            region.inside_area_a = penetration[3 * r];
+            region.inside_area_b = penetration[3 * r + 1];
+            region.depth = penetration[3 * r + 2];
+        }
         for (std::uint64_t c = curves[r]; c < curves[r + 1]; ++c) {
             const std::uint64_t local = c - curves.front();
             RecordedRegion::Curve curve;

@@ -48,6 +48,7 @@ RegionsRecord flatten(const std::vector<Region>& regions) {
         out.measures.insert(out.measures.end(), {region.curve_length, region.coplanar_area, region.box.min().x(),
                                                  region.box.min().y(), region.box.min().z(), region.box.max().x(),
                                                  region.box.max().y(), region.box.max().z()});
+        out.penetration.insert(out.penetration.end(), {region.inside_area_a, region.inside_area_b, region.depth});
         out.curves.push_back(region.curves.size());
         for (const IntersectionCurve& curve : region.curves) {
             out.closed.push_back(curve.closed ? 1 : 0);

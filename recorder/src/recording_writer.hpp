@@ -86,7 +86,7 @@ private:
     };
     /// /regions (schema 1.5, record --regions): write_regions.cpp.
     struct RegionColumns {
-        Column offsets, table, measures, curve_offsets, curve_closed, point_offsets, points, predecessor_offsets,
+        Column offsets, table, measures, penetration, curve_offsets, curve_closed, point_offsets, points, predecessor_offsets,
             predecessors;
         bool present = false;
     };

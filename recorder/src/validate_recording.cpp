@@ -251,6 +251,10 @@ void Checker::check_regions() {
             for (const RecordedRegion::Curve& curve : region.curves) loops += curve.closed ? 1 : 0;
             if (loops != region.loops) problem(name + " says " + std::to_string(region.loops) + " loops, its curves hold " + std::to_string(loops));
             if (!(region.curve_length >= 0) || !(region.coplanar_area >= 0)) problem(name + " has a negative or NaN measure");
+            // The penetration measures are NaN where not defined, never negative or infinite.
+            for (const double v : {region.inside_area_a, region.inside_area_b, region.depth}) {
+                if (!std::isnan(v) && !(v >= 0 && std::isfinite(v))) problem(name + " has a negative or infinite inside area or depth");
+            }
             for (const std::uint32_t id : region.predecessors) {
                 if (std::find(previous_ids.begin(), previous_ids.end(), id) == previous_ids.end()) {
                     problem(name + " continues region " + std::to_string(id) + ", which the previous frame does not have");

@@ -1,4 +1,4 @@
-// /regions (schema 1.5): each frame's interpenetration regions, written only by `record
+// /regions (schema 1.5; 1.6 adds /regions/penetration: the inside areas and the depth): each frame's interpenetration regions, written only by `record
 // --regions`. Rows first, offsets after them, so an offset never points past its rows.
 
 #include "recording_writer.hpp"
@@ -12,6 +12,7 @@ constexpr hsize_t k_region_chunk = 1024;   // regions per chunk
 constexpr hsize_t k_point_chunk = 8192;    // curve points per chunk
 constexpr const char* k_unit_measures =
     "input length unit (curve_length and the box; coplanar_area: its square)";
+constexpr const char* k_unit_penetration = "input length unit (depth; inside_area_a and inside_area_b: its square)";
 
 }  // namespace
 
@@ -27,6 +28,8 @@ void RecordingWriter::create_regions() {
     r.offsets = offsets(schema::k_region_offsets, 256);
     r.table = make_column(schema::k_region_table, {H5T_STD_U32LE, 7, k_region_chunk, m_deflate, schema::k_unit_none});
     r.measures = make_column(schema::k_region_measures, {H5T_IEEE_F64LE, 8, k_region_chunk, m_deflate, k_unit_measures});
+    r.penetration =
+        make_column(schema::k_region_penetration, {H5T_IEEE_F64LE, 3, k_region_chunk, m_deflate, k_unit_penetration});
     r.curve_offsets = offsets(schema::k_region_curve_offsets, k_region_chunk);
     r.curve_closed = make_column(schema::k_region_curve_closed, {H5T_STD_U8LE, 1, k_region_chunk, 0, schema::k_unit_none});
     r.point_offsets = offsets(schema::k_region_point_offsets, k_region_chunk);
@@ -41,7 +44,7 @@ void RecordingWriter::append_regions(std::span<const FrameRecord> records) {
     RegionColumns& r = m_regions;
     // Every level's running end, turned into the next level's offsets.
     std::vector<std::uint32_t> table, predecessors;
-    std::vector<double> measures, xyz;
+    std::vector<double> measures, penetration, xyz;
     std::vector<std::uint8_t> closed;
     std::vector<std::uint64_t> frame_ends, curve_ends, point_ends, predecessor_ends;
     std::uint64_t regions = r.table.length, curves = r.curve_closed.length, points = r.points.length,
@@ -50,6 +53,7 @@ void RecordingWriter::append_regions(std::span<const FrameRecord> records) {
         const RegionsRecord& f = record.regions;
         table.insert(table.end(), f.table.begin(), f.table.end());
         measures.insert(measures.end(), f.measures.begin(), f.measures.end());
+        penetration.insert(penetration.end(), f.penetration.begin(), f.penetration.end());
         closed.insert(closed.end(), f.closed.begin(), f.closed.end());
         xyz.insert(xyz.end(), f.xyz.begin(), f.xyz.end());
         predecessors.insert(predecessors.end(), f.predecessors.begin(), f.predecessors.end());
@@ -67,6 +71,7 @@ void RecordingWriter::append_regions(std::span<const FrameRecord> records) {
     rows(r.curve_offsets, H5T_NATIVE_UINT64, curve_ends.size(), curve_ends.data());
     rows(r.predecessors, H5T_NATIVE_UINT32, predecessors.size(), predecessors.data());
     rows(r.predecessor_offsets, H5T_NATIVE_UINT64, predecessor_ends.size(), predecessor_ends.data());
+    rows(r.penetration, H5T_NATIVE_DOUBLE, penetration.size() / 3, penetration.data());
     rows(r.measures, H5T_NATIVE_DOUBLE, measures.size() / 8, measures.data());
     rows(r.table, H5T_NATIVE_UINT32, table.size() / 7, table.data());
     rows(r.offsets, H5T_NATIVE_UINT64, frame_ends.size(), frame_ends.data());

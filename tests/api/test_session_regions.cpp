@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace collidescope {
 namespace {
 
@@ -46,6 +48,10 @@ TEST(SessionRegions, EachStepEqualsTheEnginesRegions) {
                 EXPECT_EQ(got[k].curves.size(), expected[k].curves.size());
                 EXPECT_EQ(got[k].predecessors, expected[k].predecessors);
                 EXPECT_EQ(got[k].box_max[2], expected[k].box.max().z());
+                const auto same = [](double x, double y) { return (std::isnan(x) && std::isnan(y)) || x == y; };
+                EXPECT_TRUE(same(got[k].depth, expected[k].depth));
+                EXPECT_TRUE(same(got[k].inside_area_a, expected[k].inside_area_a));
+                EXPECT_TRUE(same(got[k].inside_area_b, expected[k].inside_area_b));
                 ++compared;
             }
         }

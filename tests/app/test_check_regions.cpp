@@ -69,6 +69,24 @@ TEST(CheckRegions, LinesEqualTheEnginesRegionsFrameByFrame) {
     EXPECT_NE(result.err.find(std::to_string(tracker.tracks().size()) + " regions over the run"), std::string::npos);
 }
 
+TEST(CheckRegions, AClosedObjectGivesInsideAreasAndADepth) {
+    // The demo's torus is closed, its sheet open: the sheet's surface inside the torus has an
+    // area, the torus's inside the sheet has none (null), and the depth is defined.
+    TempDir dir;
+    const auto result = run_cli({"check", "--scene", "demo:small", "--frames", "8:14", "--regions", "r.jsonl"}, dir.path());
+    ASSERT_EQ(result.exit_code, 1) << result.err;
+    const std::vector<nlohmann::json> lines = read_lines(dir.path() / "r.jsonl");
+    ASSERT_FALSE(lines.empty());
+    double deepest = 0;
+    for (const nlohmann::json& line : lines) {
+        ASSERT_TRUE(line["depth"].is_number()) << line.dump();
+        EXPECT_TRUE(line["inside_area"][0].is_null() != line["inside_area"][1].is_null()) << line.dump();
+        deepest = std::max(deepest, line["depth"].get<double>());
+    }
+    EXPECT_GT(deepest, 0.0);
+    EXPECT_NE(result.err.find(" deep at most (frame "), std::string::npos) << result.err;
+}
+
 TEST(CheckRegions, SelfContactRegionsNameOneObject) {
     TempDir dir;
     const auto result = run_cli({"check", "--scene", "E4:small", "--self", "--frames", "0:2", "--regions", "-",

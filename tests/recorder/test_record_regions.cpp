@@ -1,4 +1,4 @@
-// record --regions: /regions (schema 1.5) holds, frame by frame, what find_regions and
+// record --regions: /regions (schema 1.5, measures widened in 1.6) holds, frame by frame, what find_regions and
 // RegionTracker give on the same frames (ids, counts, measures and curve points bit for bit);
 // validate checks it and names a broken offset; a recording without --regions has none; join
 // refuses parts with regions.
@@ -16,6 +16,8 @@
 #include "collidescope/regions.hpp"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace collidescope {
 namespace {
@@ -56,6 +58,10 @@ TEST(RecordRegions, RegionsEqualTheEnginesFrameByFrame) {
             EXPECT_EQ(g.loops, e.loops);
             EXPECT_EQ(g.curve_length, e.curve_length);
             EXPECT_EQ(g.coplanar_area, e.coplanar_area);
+            const auto same = [](double x, double y) { return (std::isnan(x) && std::isnan(y)) || x == y; };
+            EXPECT_TRUE(same(g.inside_area_a, e.inside_area_a));
+            EXPECT_TRUE(same(g.inside_area_b, e.inside_area_b));
+            EXPECT_TRUE(same(g.depth, e.depth));
             EXPECT_EQ(g.box[0], e.box.min().x());
             EXPECT_EQ(g.box[5], e.box.max().z());
             EXPECT_EQ(g.predecessors, e.predecessors);

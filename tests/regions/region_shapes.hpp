@@ -53,3 +53,16 @@ inline std::vector<TrianglePair> pairs_of(const Frame& frame, bool self) {
 inline std::vector<Region> regions_of(const Frame& frame, bool self) { return find_regions(frame, pairs_of(frame, self)); }
 
 }  // namespace collidescope::testing
+
+namespace collidescope::testing {
+
+/// A closed box from lo to hi: 8 corners, 12 triangles facing out.
+inline MeshData box_mesh(const Vec3& lo, const Vec3& hi) {
+    MeshData mesh;
+    for (int k = 0; k < 8; ++k) mesh.vertices.emplace_back(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+    mesh.triangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                      {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+    return mesh;
+}
+
+}  // namespace collidescope::testing

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace collidescope {
@@ -31,6 +32,11 @@ struct StepRegion {
     std::array<double, 3> box_max{};
     std::vector<StepCurve> curves;
     std::vector<std::uint32_t> predecessors;  ///< ids of the previous step's regions it continues, strongest first
+    /// obj_a's surface area inside obj_b, obj_b's inside obj_a, and the penetration depth: NaN
+    /// where not defined (the other object not closed; self-contact). docs/explanation/regions.md.
+    double inside_area_a = std::numeric_limits<double>::quiet_NaN();
+    double inside_area_b = std::numeric_limits<double>::quiet_NaN();
+    double depth = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace collidescope

@@ -15,6 +15,7 @@
 #include <Eigen/Geometry>
 
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -54,6 +55,14 @@ struct Region {
     double curve_length = 0;         ///< the curves' total length
     double coplanar_area = 0;        ///< area of the coplanar overlap (Polygon intersections)
     Eigen::AlignedBox3d box;         ///< bounds of the curves and the coplanar polygons
+    /// Area of obj_a's surface inside obj_b (NaN unless obj_b is closed; see regions.md).
+    double inside_area_a = std::numeric_limits<double>::quiet_NaN();
+    /// Area of obj_b's surface inside obj_a (NaN unless obj_a is closed).
+    double inside_area_b = std::numeric_limits<double>::quiet_NaN();
+    /// Penetration depth: the largest distance from a vertex of one object inside the other
+    /// (reached from this region's curves) to the other's surface; NaN when neither object is
+    /// closed or for self-contact. A lower bound of the deepest point; regions.md says how close.
+    double depth = std::numeric_limits<double>::quiet_NaN();
     /// Its colliding pairs (indices into the frame's pair list, ascending).
     std::vector<std::uint32_t> pair_indices;
 
@@ -65,6 +74,7 @@ struct Region {
 /// What find_regions measures.
 struct RegionOptions {
     bool curves = true;   ///< chain the segments into curves (length, loops); off: counts and box only
+    bool penetration = true;  ///< measure the inside areas and the depth (closed objects only)
 };
 
 /// The regions of one frame's colliding pairs (in any order; each pair once), ordered by their
@@ -83,6 +93,8 @@ struct RegionTrack {
     double max_curve_length = 0;
     std::uint32_t max_curve_length_frame = 0;
     std::uint32_t max_pairs = 0;
+    double max_depth = std::numeric_limits<double>::quiet_NaN();  ///< NaN: never defined
+    std::uint32_t max_depth_frame = 0;
     std::uint32_t split_from = 0;             ///< the id of the region it split off (0: none)
     std::uint32_t merged_into = 0;            ///< the id of the region it merged into (0: none)
 };

@@ -4,6 +4,7 @@
 
 #include "curves.hpp"
 #include "pair_intersection.hpp"
+#include "penetration.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -153,6 +154,7 @@ std::vector<Region> find_regions(const Frame& frame, std::span<const TrianglePai
             result[r] = describe(pairs, pieces, std::move(groups[r]), options);
         }
     });
+    if (options.penetration) regions::measure_penetration(frame, pairs, pieces, result);
     return result;
 }
 

@@ -99,6 +99,10 @@ void RegionTracker::update(std::uint32_t frame, std::vector<Region>& regions) {
             track.max_curve_length = region.curve_length;
             track.max_curve_length_frame = frame;
         }
+        if (region.depth > track.max_depth || (std::isnan(track.max_depth) && !std::isnan(region.depth))) {
+            track.max_depth = region.depth;
+            track.max_depth_frame = frame;
+        }
     }
     // A previous region whose id goes on nowhere, but which a region continues, merged into the
     // first such region (frame order; a reader of the recording can tell the same from the

@@ -3,6 +3,7 @@
 /// per-frame series, a virtual dataset's mappings (read by Recording, reader.hpp).
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,11 @@ struct RecordedRegion {
     double curve_length = 0;
     double coplanar_area = 0;
     double box[6] = {0, 0, 0, 0, 0, 0};  ///< min x y z, max x y z
+    /// Schema 1.6 (NaN where not defined, and in older recordings): obj_a's surface area inside
+    /// obj_b, obj_b's inside obj_a, and the penetration depth (regions.md).
+    double inside_area_a = std::numeric_limits<double>::quiet_NaN();
+    double inside_area_b = std::numeric_limits<double>::quiet_NaN();
+    double depth = std::numeric_limits<double>::quiet_NaN();
     struct Curve {
         bool closed = false;
         std::vector<double> xyz;  ///< 3 per point

@@ -23,7 +23,8 @@ inline constexpr std::int64_t k_version_major = 1;
 /// 1.4: /frames/time and the root attributes `fps`, `clip`, `up_axis`, each only when the
 /// scene's inputs say them (animated models, point caches); absent otherwise.
 /// 1.5: /regions and the root attribute `regions`, only in recordings made with `--regions`.
-inline constexpr std::int64_t k_version_minor = 5;
+/// 1.6: /regions/penetration (inside areas and depth), with /regions.
+inline constexpr std::int64_t k_version_minor = 6;
 
 // Root attributes.
 inline constexpr const char* k_attr_schema = "schema";
@@ -96,6 +97,9 @@ inline constexpr const char* k_region_offsets = "/regions/offsets";  ///< (F + 1
 inline constexpr const char* k_region_table = "/regions/table";
 /// (R, 8) float64 per region: curve_length, coplanar_area, box min x y z, box max x y z.
 inline constexpr const char* k_region_measures = "/regions/measures";
+/// (R, 3) float64 per region (schema 1.6): inside_area_a, inside_area_b, depth, NaN where not
+/// defined (regions.md). Absent from 1.5 recordings, whose regions read NaN there.
+inline constexpr const char* k_region_penetration = "/regions/penetration";
 inline constexpr const char* k_region_curve_offsets = "/regions/curve_offsets";  ///< (R + 1) uint64
 inline constexpr const char* k_region_curve_closed = "/regions/curve_closed";    ///< (C) uint8
 inline constexpr const char* k_region_point_offsets = "/regions/point_offsets";  ///< (C + 1) uint64

@@ -1,0 +1,356 @@
+// The part of one object's surface (X) inside a closed object (Y), found from the curves
+// alone, without a point-in-mesh query.
+//
+// Orient each intersection segment of a triangle T of X with one of Y's faces F along
+// n_T x n_F (F's normal pointing out of Y): Y's inside then lies on the segment's left, seen
+// from T's front. The part of T inside Y is bounded by those segments and by the pieces of
+// T's edges inside Y, all run counterclockwise, so its area is the contour sum
+// 1/2 n_T . sum (p x q) (Green's theorem), which needs no chaining. Which edge pieces are
+// inside follows from the segments too: walking T's border counterclockwise, a segment that
+// ends on the border is where the walk enters Y, one that starts there where it leaves. A
+// triangle no segment reaches the border of (Y pokes through its middle) is inside along its
+// whole border exactly when the segments' sum is negative (their loop encloses the outside).
+// The walk also gives T's corners as inside or not. From the inside corners a flood over X's
+// triangles that meet nothing of Y (entirely inside, then) adds their areas and corners, and
+// the depth is the largest distance from those corners to Y's surface.
+
+#include "penetration.hpp"
+
+#include "mesh_shape.hpp"
+#include "surface_distance.hpp"
+
+#include "collidescope/geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
+
+namespace collidescope::regions {
+namespace {
+
+constexpr double k_undefined = std::numeric_limits<double>::quiet_NaN();
+
+enum class Status : std::int8_t { Unknown, Outside, Inside };
+
+// A segment in the direction with Y's inside on its left; `weight` +1, or less where several
+// faces of Y report the same segment (a segment along an edge of Y counts once when Y
+// crosses T there, and not at all where Y only touches T along it). Where an end lies on T's
+// border, how the counterclockwise walk along the border changes there: +1 it enters Y, -1 it
+// leaves, 0 it touches (decided by exact signs where they decide it: the orientation of a very
+// short segment, from its rounded ends, does not).
+struct Oriented {
+    Vec3 from, to;
+    EndKey from_key, to_key;
+    double weight = 1;
+    std::optional<double> from_position, to_position;  ///< on T's border
+    double from_change = 0, to_change = 0;
+};
+
+// Where a point lies on T's border, counterclockwise from corner 0 (corner k at k, edge k from
+// corner k to k + 1 in [k, k + 1)), or nothing when inside T.
+std::optional<double> border_position(const EndKey& key, std::uint32_t object, const TriIndices& ids,
+                                      const std::array<Vec3, 3>& corners, const Vec3& point) {
+    if (!key.valid) return std::nullopt;
+    const Feature& f = key.first.object == object ? key.first : key.second;
+    if (f.object != object || f.kind == Feature::Face) return std::nullopt;
+    for (int k = 0; k < 3; ++k) {
+        if (f.kind == Feature::Vertex && ids[k] == f.a) return double(k);
+        const std::uint32_t u = ids[k], v = ids[(k + 1) % 3];
+        if (f.kind == Feature::Edge && std::min(u, v) == f.a && std::max(u, v) == f.b) {
+            const Vec3 edge = corners[(k + 1) % 3] - corners[k];
+            const double length = edge.squaredNorm();
+            const double t = length > 0 ? std::clamp((point - corners[k]).dot(edge) / length, 0.0, 1.0) : 0.0;
+            return k + t;
+        }
+    }
+    return std::nullopt;
+}
+
+struct TriangleMeasure {
+    double inside_area = 0;
+    std::array<Status, 3> corners{Status::Unknown, Status::Unknown, Status::Unknown};
+};
+
+// The part of triangle `tri` of X inside Y, from its segments.
+TriangleMeasure measure_triangle(const ObjectFrame& x, std::uint32_t tri, std::span<const Oriented> segments) {
+    TriangleMeasure result;
+    const std::array<Vec3, 3> c = x.corners(tri);
+    const Vec3 normal = (c[1] - c[0]).cross(c[2] - c[0]);
+    const double twice_area = normal.norm();
+    if (!(twice_area > 0) || segments.empty()) return result;
+    const Vec3 unit = normal / twice_area;
+    const Vec3& origin = c[0];
+    const auto contour = [&](const Vec3& p, const Vec3& q) { return 0.5 * unit.dot((p - origin).cross(q - origin)); };
+
+    double area = 0;
+    struct Event {
+        double position;
+        double change;  ///< +: the walk enters Y here
+        Vec3 point;
+    };
+    std::vector<Event> events;
+    for (const Oriented& s : segments) {
+        area += s.weight * contour(s.from, s.to);
+        if (s.from_position) events.push_back({*s.from_position, s.from_change, s.from});
+        if (s.to_position) events.push_back({*s.to_position, s.to_change, s.to});
+    }
+    if (events.empty()) {
+        const bool inside = area < 0;
+        if (inside) area += 0.5 * twice_area;
+        result.inside_area = std::clamp(area, 0.0, 0.5 * twice_area);
+        result.corners.fill(inside ? Status::Inside : Status::Outside);
+        return result;
+    }
+    std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.position < b.position; });
+    // Status after each event, up to the unknown status at corner 0: the lowest prefix sum is
+    // outside.
+    std::vector<double> after(events.size());
+    double sum = 0, lowest = 0;
+    for (std::size_t k = 0; k < events.size(); ++k) {
+        sum += events[k].change;
+        after[k] = sum;
+        lowest = std::min(lowest, sum);
+    }
+    const auto inside_after = [&](std::size_t k) { return after[k] - lowest > 0.5; };
+    // The border from each event to the next (the last one round past corner 0 to the first).
+    for (std::size_t k = 0; k < events.size(); ++k) {
+        if (!inside_after(k)) continue;
+        const std::size_t next = (k + 1) % events.size();
+        const double from = events[k].position;
+        const double to = next > k ? events[next].position : events[next].position + 3;
+        Vec3 p = events[k].point;
+        for (int corner = static_cast<int>(std::floor(from)) + 1; corner < to; ++corner) {
+            const Vec3& q = c[corner % 3];
+            area += contour(p, q);
+            p = q;
+        }
+        area += contour(p, events[next].point);
+    }
+    result.inside_area = std::clamp(area, 0.0, 0.5 * twice_area);
+    // Corner k is inside when the walk is inside there (on Y's surface: not inside).
+    for (int corner = 0; corner < 3; ++corner) {
+        bool on_surface = false;
+        std::size_t last = events.size() - 1;  // the last event before the corner, cyclically
+        for (std::size_t k = 0; k < events.size(); ++k) {
+            if (events[k].position == corner || events[k].position == corner + 3) on_surface = true;
+            if (events[k].position < corner) last = k;
+        }
+        result.corners[corner] = on_surface ? Status::Outside : inside_after(last) ? Status::Inside : Status::Outside;
+    }
+    return result;
+}
+
+// Scratch marks reused over regions: a mark is current when it equals the generation.
+struct Marks {
+    std::vector<std::uint32_t> vertex, triangle;
+    std::uint32_t generation = 0;
+    void next(std::size_t vertices, std::size_t triangles) {
+        if (vertex.size() < vertices) vertex.resize(vertices, 0);
+        if (triangle.size() < triangles) triangle.resize(triangles, 0);
+        if (++generation == 0) {
+            std::fill(vertex.begin(), vertex.end(), 0);
+            std::fill(triangle.begin(), triangle.end(), 0);
+            generation = 1;
+        }
+    }
+};
+
+struct SideResult {
+    double area = k_undefined;
+    double depth = k_undefined;
+};
+
+// Object x's surface inside the closed object y, for each region of the object pair.
+class Side {
+public:
+    Side(const Frame& frame, std::uint32_t x, std::uint32_t y, std::span<const TrianglePair> pairs,
+         std::span<const Piece> pieces, std::span<const std::uint32_t> regions, std::span<Region> all)
+        : m_frame(frame), m_x(x), m_y(y), m_pairs(pairs), m_pieces(pieces) {
+        const ObjectFrame& xo = frame.objects[x];
+        m_colliding.assign(xo.triangle_count(), 0);
+        for (const std::uint32_t r : regions) {
+            for (const std::uint32_t i : all[r].pair_indices) m_colliding[tri_x(pairs[i])] = 1;
+        }
+        m_shape = mesh_shape(*xo.topology);
+        // Y's faces point out of it when its signed volume is positive.
+        const ObjectFrame& yo = frame.objects[y];
+        const Vec3 centre = yo.vertices.size() > 0 ? yo.vertices[0] : Vec3::Zero();
+        double volume = 0;
+        for (std::uint32_t t = 0; t < yo.triangle_count(); ++t) {
+            const auto c = yo.corners(t);
+            volume += (c[0] - centre).dot((c[1] - centre).cross(c[2] - centre));
+        }
+        m_outward = volume >= 0 ? 1.0 : -1.0;
+    }
+
+    SideResult measure(const Region& region) {
+        const ObjectFrame& xo = m_frame.objects[m_x];
+        const ObjectFrame& yo = m_frame.objects[m_y];
+        m_marks.next(xo.topology->vertex_count, xo.triangle_count());
+        std::vector<std::uint32_t> by_triangle(region.pair_indices);
+        std::sort(by_triangle.begin(), by_triangle.end(),
+                  [&](std::uint32_t a, std::uint32_t b) { return tri_x(m_pairs[a]) < tri_x(m_pairs[b]); });
+        double area = 0;
+        std::vector<std::uint32_t> inside;  // X's vertices inside Y
+        const auto reach = [&](std::uint32_t v) {
+            if (m_marks.vertex[v] == m_marks.generation) return;
+            m_marks.vertex[v] = m_marks.generation;
+            inside.push_back(v);
+        };
+        std::vector<Oriented> segments;
+        std::map<std::uint32_t, double> touching;  // triangles meeting Y without a segment: coplanar area
+        for (std::size_t begin = 0; begin < by_triangle.size();) {
+            const std::uint32_t tri = tri_x(m_pairs[by_triangle[begin]]);
+            std::size_t end = begin;
+            while (end < by_triangle.size() && tri_x(m_pairs[by_triangle[end]]) == tri) ++end;
+            orient(xo, yo, tri, std::span(by_triangle).subspan(begin, end - begin), segments);
+            const TriangleMeasure t = measure_triangle(xo, tri, segments);
+            if (segments.empty()) {
+                // Touching Y only at points or in its plane: the rest of the triangle lies on
+                // one side, which the flood finds (it counts the triangle, less the coplanar
+                // part, when it reaches a corner, and goes no further through it).
+                double coplanar = 0;
+                for (std::size_t k = begin; k < end; ++k) coplanar += m_pieces[by_triangle[k]].area;
+                touching.emplace(tri, coplanar);
+            }
+            area += t.inside_area;
+            for (int k = 0; k < 3; ++k) {
+                if (t.corners[k] == Status::Inside) reach(xo.topology->triangles[tri][k]);
+            }
+            begin = end;
+        }
+        // The flood: a triangle that meets nothing of Y and has a corner inside lies inside.
+        for (std::size_t next = 0; next < inside.size(); ++next) {
+            const std::uint32_t v = inside[next];
+            for (std::uint32_t k = m_shape->incident_begin[v]; k < m_shape->incident_begin[v + 1]; ++k) {
+                const std::uint32_t t = m_shape->incident[k];
+                if (m_marks.triangle[t] == m_marks.generation) continue;
+                const auto touch = touching.find(t);
+                if (m_colliding[t] && touch == touching.end()) continue;
+                m_marks.triangle[t] = m_marks.generation;
+                const auto c = xo.corners(t);
+                const double full = 0.5 * (c[1] - c[0]).cross(c[2] - c[0]).norm();
+                if (touch != touching.end()) {
+                    area += std::max(0.0, full - touch->second);
+                    continue;
+                }
+                area += full;
+                for (const std::uint32_t w : xo.topology->triangles[t]) reach(w);
+            }
+        }
+        double depth = 0;
+        if (!inside.empty()) {
+            if (!m_distance) m_distance.emplace(yo.topology->triangles, yo.vertices.span());
+            for (const std::uint32_t v : inside) depth = std::max(depth, (*m_distance)(xo.vertices[v]));
+        }
+        return {area, depth};
+    }
+
+private:
+    std::uint32_t tri_x(const TrianglePair& p) const { return m_x == p.obj_a ? p.tri_a : p.tri_b; }
+    std::uint32_t tri_y(const TrianglePair& p) const { return m_x == p.obj_a ? p.tri_b : p.tri_a; }
+
+    // The segments of triangle `tri`'s pairs `indices`, oriented, each once.
+    void orient(const ObjectFrame& xo, const ObjectFrame& yo, std::uint32_t tri, std::span<const std::uint32_t> indices,
+                std::vector<Oriented>& out) const {
+        out.clear();
+        const TriIndices& ids = xo.topology->triangles[tri];
+        const auto c = xo.corners(tri);
+        const Vec3 normal = (c[1] - c[0]).cross(c[2] - c[0]);
+        // Segments reported with the same two ends' keys: their weights and border changes
+        // summed in the keys' order (first key's end, second key's end), and how many.
+        struct Shared {
+            double weight = 0, first_change = 0, second_change = 0;
+            int count = 0;
+        };
+        std::map<std::pair<EndKey, EndKey>, Shared> shared;
+        std::vector<Oriented> found;
+        for (const std::uint32_t i : indices) {
+            const Piece& piece = m_pieces[i];
+            if (piece.kind != PairIntersection::Kind::Segment) continue;
+            const auto f = yo.corners(tri_y(m_pairs[i]));
+            const Vec3 direction = normal.cross(m_outward * (f[1] - f[0]).cross(f[2] - f[0]));
+            const double along = (piece.ends[1] - piece.ends[0]).dot(direction);
+            if (along == 0) continue;
+            Oriented s{piece.ends[0], piece.ends[1], piece.keys[0], piece.keys[1]};
+            if (along < 0) {
+                std::swap(s.from, s.to);
+                std::swap(s.from_key, s.to_key);
+            }
+            // +1 outside F's plane, -1 inside, 0 on it.
+            const auto side = [&](int k) { return -m_outward * orient3d(f[0], f[1], f[2], c[k]); };
+            const auto change = [&](double position, double fallback) {
+                const int corner = static_cast<int>(position);
+                const bool at_corner = position == corner;
+                const double before = side(at_corner ? (corner + 2) % 3 : corner % 3), after = side((corner + 1) % 3);
+                return before != 0 && after != 0 ? (before - after) / 2 : fallback;
+            };
+            s.from_position = border_position(s.from_key, m_x, ids, c, s.from);
+            s.to_position = border_position(s.to_key, m_x, ids, c, s.to);
+            if (s.from_position) s.from_change = change(*s.from_position, -1);
+            if (s.to_position) s.to_change = change(*s.to_position, 1);
+            if (s.from_key.valid && s.to_key.valid) {
+                const bool forward = s.from_key < s.to_key;
+                Shared& group = shared[forward ? std::pair(s.from_key, s.to_key) : std::pair(s.to_key, s.from_key)];
+                if (group.count++ == 0) found.push_back(s);
+                group.weight += forward ? 1 : -1;
+                group.first_change += forward ? s.from_change : s.to_change;
+                group.second_change += forward ? s.to_change : s.from_change;
+            } else {
+                found.push_back(s);
+            }
+        }
+        for (Oriented& s : found) {
+            if (s.from_key.valid && s.to_key.valid) {
+                // The faces reporting it, net, as seen in this copy's direction.
+                const bool forward = s.from_key < s.to_key;
+                const Shared& group = shared.at(forward ? std::pair(s.from_key, s.to_key) : std::pair(s.to_key, s.from_key));
+                s.weight = (forward ? group.weight : -group.weight) / group.count;
+                s.from_change = (forward ? group.first_change : group.second_change) / group.count;
+                s.to_change = (forward ? group.second_change : group.first_change) / group.count;
+            }
+            if (s.weight != 0 || s.from_change != 0 || s.to_change != 0) out.push_back(s);
+        }
+    }
+
+    const Frame& m_frame;
+    std::uint32_t m_x, m_y;
+    std::span<const TrianglePair> m_pairs;
+    std::span<const Piece> m_pieces;
+    std::vector<std::uint8_t> m_colliding;
+    std::shared_ptr<const MeshShape> m_shape;
+    double m_outward = 1;
+    Marks m_marks;
+    std::optional<SurfaceDistance> m_distance;
+};
+
+}  // namespace
+
+void measure_penetration(const Frame& frame, std::span<const TrianglePair> pairs, std::span<const Piece> pieces,
+                         std::span<Region> regions) {
+    // The regions of each object pair (regions are ordered by their first pair, not by objects).
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> by_objects;
+    for (std::uint32_t r = 0; r < regions.size(); ++r) {
+        Region& region = regions[r];
+        region.depth = region.inside_area_a = region.inside_area_b = k_undefined;
+        if (region.obj_a != region.obj_b) by_objects[{region.obj_a, region.obj_b}].push_back(r);
+    }
+    for (const auto& [objects, members] : by_objects) {
+        const auto [a, b] = objects;
+        for (const bool a_inside_b : {true, false}) {
+            const std::uint32_t x = a_inside_b ? a : b, y = a_inside_b ? b : a;
+            if (!mesh_shape(*frame.objects[y].topology)->closed) continue;
+            Side side(frame, x, y, pairs, pieces, members, regions);
+            for (const std::uint32_t r : members) {
+                const SideResult measured = side.measure(regions[r]);
+                (a_inside_b ? regions[r].inside_area_a : regions[r].inside_area_b) = measured.area;
+                Region& region = regions[r];
+                region.depth = std::isnan(region.depth) ? measured.depth : std::max(region.depth, measured.depth);
+            }
+        }
+    }
+}
+
+}  // namespace collidescope::regions

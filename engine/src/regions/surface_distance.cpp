@@ -1,0 +1,88 @@
+// Nearest-triangle search: a stack of nodes, the nearer child first, skipping every node
+// whose box lies farther than the best distance so far (squared distances throughout).
+
+#include "surface_distance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace collidescope::regions {
+namespace {
+
+double squared_box_distance(const bvh::Aabb& box, const Vec3& p) {
+    double sum = 0;
+    for (int k = 0; k < 3; ++k) {
+        const double d = p[k] < box.lo[k] ? box.lo[k] - p[k] : p[k] > box.hi[k] ? p[k] - box.hi[k] : 0.0;
+        sum += d * d;
+    }
+    return sum;
+}
+
+}  // namespace
+
+Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 ab = b - a, ac = c - a, ap = p - a;
+    const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+    if (d1 <= 0 && d2 <= 0) return a;
+    const Vec3 bp = p - b;
+    const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+    if (d3 >= 0 && d4 <= d3) return b;
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + d1 / (d1 - d3) * ab;
+    const Vec3 cp = p - c;
+    const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+    if (d6 >= 0 && d5 <= d6) return c;
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + d2 / (d2 - d6) * ac;
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+    const double sum = va + vb + vc;
+    if (!(sum > 0)) {  // a degenerate triangle: the nearest of its three edges' closest points
+        Vec3 best = a;
+        for (const auto& [s, t] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}}) {
+            const Vec3 st = t - s;
+            const double length = st.squaredNorm();
+            const double u = length > 0 ? std::clamp((p - s).dot(st) / length, 0.0, 1.0) : 0.0;
+            const Vec3 q = s + u * st;
+            if ((q - p).squaredNorm() < (best - p).squaredNorm()) best = q;
+        }
+        return best;
+    }
+    return a + ab * (vb / sum) + ac * (vc / sum);
+}
+
+SurfaceDistance::SurfaceDistance(std::span<const TriIndices> triangles, std::span<const Vec3> vertices)
+    : m_triangles(triangles), m_vertices(vertices) {
+    if (!triangles.empty()) bvh::build_tree(triangles, vertices, bvh::BuildConfig{}, m_tree);
+}
+
+double SurfaceDistance::operator()(const Vec3& p) const {
+    double best = std::numeric_limits<double>::infinity();
+    if (m_tree.empty()) return best;
+    std::vector<std::uint32_t> stack{0};
+    stack.reserve(64);
+    while (!stack.empty()) {
+        const std::uint32_t index = stack.back();
+        stack.pop_back();
+        const bvh::Node& node = m_tree.nodes[index];
+        if (squared_box_distance(node.box, p) > best) continue;
+        if (node.is_leaf()) {
+            for (std::uint32_t k = node.index; k < node.index + node.count; ++k) {
+                const TriIndices& t = m_triangles[m_tree.triangle_ids[k]];
+                const Vec3 q = closest_point_on_triangle(p, m_vertices[t[0]], m_vertices[t[1]], m_vertices[t[2]]);
+                best = std::min(best, (q - p).squaredNorm());
+            }
+            continue;
+        }
+        const std::uint32_t left = index + 1, right = node.index;  // preorder: the left child is next
+        const bool left_first = squared_box_distance(m_tree.nodes[left].box, p) < squared_box_distance(m_tree.nodes[right].box, p);
+        stack.push_back(left_first ? right : left);
+        stack.push_back(left_first ? left : right);
+    }
+    return std::sqrt(best);
+}
+
+}  // namespace collidescope::regions
