@@ -23,21 +23,28 @@ MeshShape compute(const Topology& topology) {
     for (std::uint32_t tri = 0; tri < topology.triangles.size(); ++tri) {
         for (const std::uint32_t v : topology.triangles[tri]) shape.incident[next[v]++] = tri;
     }
-    // Closed: the directed edges, sorted, hold each (u, v) once and its reverse once.
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
-    edges.reserve(3 * topology.triangles.size());
-    bool degenerate = topology.triangles.empty();
+    // Closed: each directed edge (u, v) once, and its reverse (v, u) once. Through the
+    // incidence lists: u's outgoing edges are the corners after u in its triangles.
+    if (topology.triangles.empty()) return shape;
     for (const TriIndices& t : topology.triangles) {
-        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) degenerate = true;
-        for (int k = 0; k < 3; ++k) edges.emplace_back(t[k], t[(k + 1) % 3]);
+        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) return shape;
     }
-    if (degenerate) return shape;
-    std::sort(edges.begin(), edges.end());
-    bool closed = std::adjacent_find(edges.begin(), edges.end()) == edges.end();
-    for (std::size_t k = 0; closed && k < edges.size(); ++k) {
-        closed = std::binary_search(edges.begin(), edges.end(), std::pair(edges[k].second, edges[k].first));
+    const auto after = [&](std::uint32_t tri, std::uint32_t v) {
+        const TriIndices& t = topology.triangles[tri];
+        return t[0] == v ? t[1] : t[1] == v ? t[2] : t[0];
+    };
+    const auto count_edge = [&](std::uint32_t u, std::uint32_t v) {  // triangles with directed edge (u, v)
+        int n = 0;
+        for (std::uint32_t k = shape.incident_begin[u]; k < shape.incident_begin[u + 1]; ++k) n += after(shape.incident[k], u) == v;
+        return n;
+    };
+    for (std::uint32_t u = 0; u < vertices; ++u) {
+        for (std::uint32_t k = shape.incident_begin[u]; k < shape.incident_begin[u + 1]; ++k) {
+            const std::uint32_t v = after(shape.incident[k], u);
+            if (count_edge(u, v) != 1 || count_edge(v, u) != 1) return shape;
+        }
     }
-    shape.closed = closed;
+    shape.closed = true;
     return shape;
 }
 

@@ -142,20 +142,32 @@ TriangleMeasure measure_triangle(const ObjectFrame& x, std::uint32_t tri, std::s
     return result;
 }
 
-// Scratch marks reused over regions: a mark is current when it equals the generation.
+// Marks kept from call to call (per thread), so that a frame pays for what it marks, not for
+// clearing arrays as long as the meshes: a mark is current when it equals its generation.
 struct Marks {
-    std::vector<std::uint32_t> vertex, triangle;
+    std::vector<std::uint32_t> values;
     std::uint32_t generation = 0;
-    void next(std::size_t vertices, std::size_t triangles) {
-        if (vertex.size() < vertices) vertex.resize(vertices, 0);
-        if (triangle.size() < triangles) triangle.resize(triangles, 0);
+    void next(std::size_t size) {
+        if (values.size() < size) values.resize(size, 0);
         if (++generation == 0) {
-            std::fill(vertex.begin(), vertex.end(), 0);
-            std::fill(triangle.begin(), triangle.end(), 0);
+            std::fill(values.begin(), values.end(), 0);
             generation = 1;
         }
     }
+    bool marked(std::size_t i) const { return values[i] == generation; }
+    bool mark(std::size_t i) {  ///< false when it already was
+        if (values[i] == generation) return false;
+        values[i] = generation;
+        return true;
+    }
 };
+struct Scratch {
+    Marks colliding, vertex, triangle;
+};
+Scratch& scratch() {
+    thread_local Scratch s;
+    return s;
+}
 
 struct SideResult {
     double area = k_undefined;
@@ -169,9 +181,9 @@ public:
          std::span<const Piece> pieces, std::span<const std::uint32_t> regions, std::span<Region> all)
         : m_frame(frame), m_x(x), m_y(y), m_pairs(pairs), m_pieces(pieces) {
         const ObjectFrame& xo = frame.objects[x];
-        m_colliding.assign(xo.triangle_count(), 0);
+        m_scratch.colliding.next(xo.triangle_count());
         for (const std::uint32_t r : regions) {
-            for (const std::uint32_t i : all[r].pair_indices) m_colliding[tri_x(pairs[i])] = 1;
+            for (const std::uint32_t i : all[r].pair_indices) m_scratch.colliding.mark(tri_x(pairs[i]));
         }
         m_shape = mesh_shape(*xo.topology);
         // Y's faces point out of it when its signed volume is positive.
@@ -188,16 +200,15 @@ public:
     SideResult measure(const Region& region) {
         const ObjectFrame& xo = m_frame.objects[m_x];
         const ObjectFrame& yo = m_frame.objects[m_y];
-        m_marks.next(xo.topology->vertex_count, xo.triangle_count());
+        m_scratch.vertex.next(xo.topology->vertex_count);
+        m_scratch.triangle.next(xo.triangle_count());
         std::vector<std::uint32_t> by_triangle(region.pair_indices);
         std::sort(by_triangle.begin(), by_triangle.end(),
                   [&](std::uint32_t a, std::uint32_t b) { return tri_x(m_pairs[a]) < tri_x(m_pairs[b]); });
         double area = 0;
         std::vector<std::uint32_t> inside;  // X's vertices inside Y
         const auto reach = [&](std::uint32_t v) {
-            if (m_marks.vertex[v] == m_marks.generation) return;
-            m_marks.vertex[v] = m_marks.generation;
-            inside.push_back(v);
+            if (m_scratch.vertex.mark(v)) inside.push_back(v);
         };
         std::vector<Oriented> segments;
         std::map<std::uint32_t, double> touching;  // triangles meeting Y without a segment: coplanar area
@@ -226,10 +237,10 @@ public:
             const std::uint32_t v = inside[next];
             for (std::uint32_t k = m_shape->incident_begin[v]; k < m_shape->incident_begin[v + 1]; ++k) {
                 const std::uint32_t t = m_shape->incident[k];
-                if (m_marks.triangle[t] == m_marks.generation) continue;
+                if (m_scratch.triangle.marked(t)) continue;
                 const auto touch = touching.find(t);
-                if (m_colliding[t] && touch == touching.end()) continue;
-                m_marks.triangle[t] = m_marks.generation;
+                if (m_scratch.colliding.marked(t) && touch == touching.end()) continue;
+                m_scratch.triangle.mark(t);
                 const auto c = xo.corners(t);
                 const double full = 0.5 * (c[1] - c[0]).cross(c[2] - c[0]).norm();
                 if (touch != touching.end()) {
@@ -240,10 +251,12 @@ public:
                 for (const std::uint32_t w : xo.topology->triangles[t]) reach(w);
             }
         }
+        // The deepest: the last vertices the flood reached lie farthest from the curves, so
+        // go backwards; a search ends once the vertex is known not to beat the deepest so far.
         double depth = 0;
         if (!inside.empty()) {
-            if (!m_distance) m_distance.emplace(yo.topology->triangles, yo.vertices.span());
-            for (const std::uint32_t v : inside) depth = std::max(depth, (*m_distance)(xo.vertices[v]));
+            if (!m_distance) m_distance.emplace(*yo.topology, yo.vertices.span());
+            for (auto v = inside.rbegin(); v != inside.rend(); ++v) depth = std::max(depth, m_distance->beyond(xo.vertices[*v], depth));
         }
         return {area, depth};
     }
@@ -319,10 +332,9 @@ private:
     std::uint32_t m_x, m_y;
     std::span<const TrianglePair> m_pairs;
     std::span<const Piece> m_pieces;
-    std::vector<std::uint8_t> m_colliding;
+    Scratch& m_scratch = scratch();
     std::shared_ptr<const MeshShape> m_shape;
     double m_outward = 1;
-    Marks m_marks;
     std::optional<SurfaceDistance> m_distance;
 };
 

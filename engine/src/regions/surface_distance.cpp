@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -54,31 +55,75 @@ Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, cons
     return a + ab * (vb / sum) + ac * (vc / sum);
 }
 
-SurfaceDistance::SurfaceDistance(std::span<const TriIndices> triangles, std::span<const Vec3> vertices)
-    : m_triangles(triangles), m_vertices(vertices) {
-    if (!triangles.empty()) bvh::build_tree(triangles, vertices, bvh::BuildConfig{}, m_tree);
+// Trees by topology revision, each out of the cache while a SurfaceDistance uses it (a second
+// user of the same topology at once builds its own). A few entries: the objects in use.
+class TreeCache {
+public:
+    std::unique_ptr<bvh::Tree> take(std::uint64_t revision) {
+        const std::lock_guard lock(m_mutex);
+        for (auto it = m_entries.begin(); it != m_entries.end(); ++it) {
+            if (it->first == revision) {
+                std::unique_ptr<bvh::Tree> tree = std::move(it->second);
+                m_entries.erase(it);
+                return tree;
+            }
+        }
+        return nullptr;
+    }
+    void give(std::uint64_t revision, std::unique_ptr<bvh::Tree> tree) {
+        const std::lock_guard lock(m_mutex);
+        if (m_entries.size() == k_entries) m_entries.erase(m_entries.begin());
+        m_entries.emplace_back(revision, std::move(tree));
+    }
+
+private:
+    static constexpr std::size_t k_entries = 16;
+    std::mutex m_mutex;
+    std::vector<std::pair<std::uint64_t, std::unique_ptr<bvh::Tree>>> m_entries;
+};
+
+TreeCache& tree_cache() {
+    static TreeCache cache;
+    return cache;
 }
 
-double SurfaceDistance::operator()(const Vec3& p) const {
+SurfaceDistance::SurfaceDistance(const Topology& topology, std::span<const Vec3> vertices)
+    : m_revision(topology.revision), m_triangles(topology.triangles), m_vertices(vertices) {
+    if (m_revision != 0) m_tree = tree_cache().take(m_revision);
+    if (m_tree) {
+        bvh::refit(*m_tree, m_triangles, vertices);
+    } else {
+        m_tree = std::make_unique<bvh::Tree>();
+        if (!m_triangles.empty()) bvh::build_tree(m_triangles, vertices, bvh::BuildConfig{}, *m_tree);
+    }
+}
+
+SurfaceDistance::~SurfaceDistance() {
+    if (m_revision != 0 && m_tree) tree_cache().give(m_revision, std::move(m_tree));
+}
+
+double SurfaceDistance::beyond(const Vec3& p, double bound) const {
     double best = std::numeric_limits<double>::infinity();
-    if (m_tree.empty()) return best;
+    if (m_tree->empty()) return best;
+    const double enough = bound > 0 ? bound * bound : -1;  // squared: a triangle this near ends the search
     std::vector<std::uint32_t> stack{0};
     stack.reserve(64);
     while (!stack.empty()) {
         const std::uint32_t index = stack.back();
         stack.pop_back();
-        const bvh::Node& node = m_tree.nodes[index];
+        const bvh::Node& node = m_tree->nodes[index];
         if (squared_box_distance(node.box, p) > best) continue;
         if (node.is_leaf()) {
             for (std::uint32_t k = node.index; k < node.index + node.count; ++k) {
-                const TriIndices& t = m_triangles[m_tree.triangle_ids[k]];
+                const TriIndices& t = m_triangles[m_tree->triangle_ids[k]];
                 const Vec3 q = closest_point_on_triangle(p, m_vertices[t[0]], m_vertices[t[1]], m_vertices[t[2]]);
                 best = std::min(best, (q - p).squaredNorm());
             }
+            if (best <= enough) return std::sqrt(best);
             continue;
         }
         const std::uint32_t left = index + 1, right = node.index;  // preorder: the left child is next
-        const bool left_first = squared_box_distance(m_tree.nodes[left].box, p) < squared_box_distance(m_tree.nodes[right].box, p);
+        const bool left_first = squared_box_distance(m_tree->nodes[left].box, p) < squared_box_distance(m_tree->nodes[right].box, p);
         stack.push_back(left_first ? right : left);
         stack.push_back(left_first ? left : right);
     }
