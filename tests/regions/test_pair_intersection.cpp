@@ -109,3 +109,39 @@ TEST(PairIntersection, FastPathEqualsTheGeneralPath) {
 
 }  // namespace
 }  // namespace collidescope
+
+namespace collidescope {
+namespace {
+
+// plane_sides' shortcut for planes whose corners share a coordinate against orient3d, on small
+// integer grids (many corners exactly in the plane), every axis and both turns of the plane.
+TEST(PairIntersection, AxisAlignedPlaneSidesEqualOrient3d) {
+    const std::uint64_t seed = 38;
+    std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
+    std::mt19937_64 rng(seed);
+    std::uniform_int_distribution<int> grid(-3, 3);
+    std::uint32_t zeros = 0, checked = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const int axis = i % 3;
+        const double level = grid(rng) * 0.25;
+        std::array<Vec3, 3> plane, t;
+        for (Vec3& p : plane) {
+            p = Vec3(grid(rng), grid(rng), grid(rng)) * 0.5;
+            p[axis] = level;
+        }
+        for (Vec3& p : t) p = Vec3(grid(rng), grid(rng), grid(rng)) * 0.25;
+        const std::array<int, 3> fast = regions::plane_sides(plane, t, true);
+        const std::array<int, 3> slow = regions::plane_sides(plane, t, false);
+        for (int k = 0; k < 3; ++k) {
+            ASSERT_EQ(fast[k], slow[k]) << "case " << i << " axis " << axis << " corner " << k;
+            ASSERT_EQ(slow[k], orient3d(plane[0], plane[1], plane[2], t[k]));
+            zeros += slow[k] == 0;
+            ++checked;
+        }
+    }
+    std::printf("%u signs, %u zero\n", checked, zeros);
+    EXPECT_GT(zeros, 1000u);
+}
+
+}  // namespace
+}  // namespace collidescope

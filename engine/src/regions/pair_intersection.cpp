@@ -193,22 +193,27 @@ Piece coplanar(const Triangle& a, const Triangle& b, std::vector<Vec3>* polygon)
         std::size_t size = 0;
         void push(const Vec3& p) { corners[size++] = p; }
     };
-    Polygon clipped, next;
-    for (const Vec3& corner : a) clipped.push(corner);
-    for (int e = 0; e < 3 && clipped.size > 0; ++e) {
+    Polygon buffers[2];
+    Polygon* clipped_ptr = &buffers[0];
+    Polygon* next_ptr = &buffers[1];
+    for (const Vec3& corner : a) clipped_ptr->push(corner);
+    for (int e = 0; e < 3 && clipped_ptr->size > 0; ++e) {
         const Vec3& p = b[e];
         const Vec3& q = b[(e + 1) % 3];
+        Polygon& from = *clipped_ptr;
+        Polygon& next = *next_ptr;
         next.size = 0;
-        for (std::size_t i = 0; i < clipped.size; ++i) {
-            const Vec3& s = clipped.corners[i];
-            const Vec3& t = clipped.corners[(i + 1) % clipped.size];
+        for (std::size_t i = 0; i < from.size; ++i) {
+            const Vec3& s = from.corners[i];
+            const Vec3& t = from.corners[i + 1 == from.size ? 0 : i + 1];
             const double ds = orientation * cross2(p, q, s);
             const double dt = orientation * cross2(p, q, t);
             if (ds >= 0) next.push(s);
             if ((ds >= 0) != (dt >= 0) && ds != dt && next.size < next.corners.size()) next.push(s + (ds / (ds - dt)) * (t - s));
         }
-        std::swap(clipped, next);
+        std::swap(clipped_ptr, next_ptr);
     }
+    Polygon& clipped = *clipped_ptr;
     // Rounding or a degenerate triangle can clip everything away from a pair the exact test
     // found touching: keep a corner of a.
     if (clipped.size == 0) clipped.push(a[0]);
@@ -275,20 +280,34 @@ bool generic_crossing(const Triangle& a, const TriIndices& ia, const Triangle& b
     return true;
 }
 
-std::array<int, 3> sides(const Triangle& plane, const Triangle& t) {
+// The signs of t's corners against the plane of `plane`: orient3d of each. Where the plane's
+// corners share one coordinate exactly (a floor, a box face, a sheet at rest: where exact
+// coplanarity is common in floating point), the determinant factors exactly: with the shared
+// coordinate k = c, orient3d(p0, p1, p2, x) = sign(c - x_k) * orient2d(p0, p1, p2) in the
+// projection dropping k (its cyclic order (k + 1, k + 2)), so three comparisons and one 2D
+// orientation replace three 3D ones whose filter cannot decide a zero.
+}  // namespace
+
+std::array<int, 3> plane_sides(const std::array<Vec3, 3>& plane, const std::array<Vec3, 3>& t, bool fast) {
+    for (int k = 0; fast && k < 3; ++k) {
+        const double c = plane[0][k];
+        if (plane[1][k] != c || plane[2][k] != c) continue;
+        const int turn = orient2d(plane[0], plane[1], plane[2], k);
+        if (turn == 0) break;  // a flat triangle: the general predicate
+        const auto side = [&](const Vec3& x) { return turn * ((c > x[k]) - (c < x[k])); };
+        return {side(t[0]), side(t[1]), side(t[2])};
+    }
     return {orient3d(plane[0], plane[1], plane[2], t[0]), orient3d(plane[0], plane[1], plane[2], t[1]),
             orient3d(plane[0], plane[1], plane[2], t[2])};
 }
-
-}  // namespace
 
 Piece intersect(const Frame& frame, const TrianglePair& pair, std::vector<Vec3>* polygon, bool fast) {
     const ObjectFrame& object_a = frame.objects[pair.obj_a];
     const ObjectFrame& object_b = frame.objects[pair.obj_b];
     const Triangle a = object_a.corners(pair.tri_a);
     const Triangle b = object_b.corners(pair.tri_b);
-    const std::array<int, 3> sa = sides(b, a);
-    const std::array<int, 3> sb = sides(a, b);
+    const std::array<int, 3> sa = plane_sides(b, a, fast);
+    const std::array<int, 3> sb = plane_sides(a, b, fast);
     const bool flat_a = sa == std::array<int, 3>{0, 0, 0};
     const bool flat_b = sb == std::array<int, 3>{0, 0, 0};
     if (flat_a || flat_b) return coplanar(a, b, polygon);

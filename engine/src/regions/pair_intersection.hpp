@@ -47,9 +47,13 @@ struct Piece {
     double area = 0;               ///< Polygon only
 };
 
+/// orient3d(plane[0], plane[1], plane[2], t[i]) for each corner of t. `fast`: by one 2D
+/// orientation and three comparisons where the plane's corners share a coordinate exactly.
+std::array<int, 3> plane_sides(const std::array<Vec3, 3>& plane, const std::array<Vec3, 3>& t, bool fast = true);
+
 /// The intersection of `pair`'s triangles in `frame`; `polygon` receives a coplanar
 /// polygon's corners (or a point or segment's points) when not null. `fast` false: the general
-/// path for every pair (the tests compare the two).
+/// path for every pair, and plane_sides without its shortcut (the tests compare the two).
 Piece intersect(const Frame& frame, const TrianglePair& pair, std::vector<Vec3>* polygon = nullptr, bool fast = true);
 
 }  // namespace collidescope::regions
