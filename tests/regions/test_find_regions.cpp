@@ -138,3 +138,70 @@ TEST(FindRegions, DegenerateInputGivesFiniteRegions) {
 
 }  // namespace
 }  // namespace collidescope
+
+namespace collidescope {
+namespace {
+
+// The grouping against its definition, checked the slow way: two pairs of one object pair are
+// in one region exactly when a chain of pairs, each sharing a vertex with the next on either
+// side, joins them (every pair against every other, a flood).
+TEST(FindRegions, RegionsAreTheClassesOfPairsSharingAVertexOnEitherSide) {
+    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+        std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
+        const bool self = seed % 3 == 0;
+        const Scene scene = testing::random_scene(seed, {.objects = 3, .frames = 1, .max_triangles = 60, .sheet_cells = 7});
+        const Frame frame = testing::all_frames(scene)[0];
+        const std::vector<TrianglePair> pairs = pairs_of(frame, self);
+        const std::vector<Region> regions = find_regions(frame, pairs, {.curves = false, .penetration = false});
+        std::vector<int> region_of(pairs.size(), -1);
+        for (std::size_t r = 0; r < regions.size(); ++r) {
+            for (const std::uint32_t i : regions[r].pair_indices) region_of[i] = static_cast<int>(r);
+        }
+        const auto shares = [&](const TrianglePair& x, const TrianglePair& y) {
+            if (x.obj_a != y.obj_a || x.obj_b != y.obj_b) return false;
+            const auto corners = [&](std::uint32_t object, std::uint32_t tri) { return frame.objects[object].topology->triangles[tri]; };
+            // Self-contact: all four triangles are one object's, every corner against every corner.
+            std::vector<std::uint32_t> cx, cy;
+            for (const std::uint32_t v : corners(x.obj_a, x.tri_a)) cx.push_back(v);
+            for (const std::uint32_t v : corners(y.obj_a, y.tri_a)) cy.push_back(v);
+            const bool self_pair = x.obj_a == x.obj_b;
+            std::vector<std::uint32_t> bx, by;
+            for (const std::uint32_t v : corners(x.obj_b, x.tri_b)) (self_pair ? cx : bx).push_back(v);
+            for (const std::uint32_t v : corners(y.obj_b, y.tri_b)) (self_pair ? cy : by).push_back(v);
+            for (const std::uint32_t u : cx) {
+                for (const std::uint32_t v : cy) {
+                    if (u == v) return true;
+                }
+            }
+            for (const std::uint32_t u : bx) {
+                for (const std::uint32_t v : by) {
+                    if (u == v) return true;
+                }
+            }
+            return false;
+        };
+        std::vector<int> slow(pairs.size(), -1);
+        int classes = 0;
+        for (std::size_t start = 0; start < pairs.size(); ++start) {
+            if (slow[start] >= 0) continue;
+            std::vector<std::size_t> queue{start};
+            slow[start] = classes;
+            for (std::size_t next = 0; next < queue.size(); ++next) {
+                for (std::size_t j = 0; j < pairs.size(); ++j) {
+                    if (slow[j] < 0 && shares(pairs[queue[next]], pairs[j])) {
+                        slow[j] = classes;
+                        queue.push_back(j);
+                    }
+                }
+            }
+            ++classes;
+        }
+        ASSERT_EQ(regions.size(), static_cast<std::size_t>(classes)) << "seed " << seed;
+        // The same partition: classes numbered by first pair on both sides.
+        for (std::size_t i = 0; i < pairs.size(); ++i) ASSERT_EQ(region_of[i], slow[i]) << "seed " << seed << " pair " << i;
+        std::printf("  %zu pairs, %d regions\n", pairs.size(), classes);
+    }
+}
+
+}  // namespace
+}  // namespace collidescope

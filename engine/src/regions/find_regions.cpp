@@ -15,43 +15,13 @@
 namespace collidescope {
 namespace {
 
-// Union-find over pair indices, by size, with path halving.
-class DisjointSets {
-public:
-    explicit DisjointSets(std::size_t n) : m_parent(n), m_size(n, 1) { std::iota(m_parent.begin(), m_parent.end(), 0u); }
-    std::uint32_t find(std::uint32_t x) {
-        while (m_parent[x] != x) x = m_parent[x] = m_parent[m_parent[x]];
-        return x;
-    }
-    void unite(std::uint32_t x, std::uint32_t y) {
-        x = find(x);
-        y = find(y);
-        if (x == y) return;
-        if (m_size[x] < m_size[y]) std::swap(x, y);
-        m_parent[y] = x;
-        m_size[x] += m_size[y];
-    }
-
-private:
-    std::vector<std::uint32_t> m_parent;
-    std::vector<std::uint32_t> m_size;
-};
-
 // The pairs of each region, regions ordered by their first pair. Within the pairs of one
-// object pair, a pair joins the first pair seen at
-// each of its six vertices (dense arrays over the objects' vertices, reset where touched).
+// object pair, a union-find over the two objects' vertices (one array for self-contact): each
+// colliding triangle joins its three vertices (once), each pair joins a vertex of its triangle
+// to one of the other's. Two pairs then share a set exactly when a chain of shared vertices
+// connects them: one union per pair and two per colliding triangle, where joining each pair at
+// its six vertices took six.
 std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::span<const TrianglePair> pairs) {
-    DisjointSets sets(pairs.size());
-    std::size_t most_vertices = 0;
-    for (const ObjectFrame& object : frame.objects) most_vertices = std::max<std::size_t>(most_vertices, object.topology->vertex_count);
-    std::vector<std::uint32_t> first_a(most_vertices, UINT32_MAX), first_b(most_vertices, UINT32_MAX);
-    const auto join = [&](std::vector<std::uint32_t>& first, std::uint32_t vertex, std::uint32_t pair) {
-        if (first[vertex] == UINT32_MAX) {
-            first[vertex] = pair;
-        } else {
-            sets.unite(pair, first[vertex]);
-        }
-    };
     // The pairs in object-pair order (the pipeline's sorted pairs already are).
     const auto objects = [&](std::uint32_t i) { return std::uint64_t(pairs[i].obj_a) << 32 | pairs[i].obj_b; };
     std::vector<std::uint32_t> order(pairs.size());
@@ -59,46 +29,100 @@ std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::spa
     if (!std::is_sorted(order.begin(), order.end(), [&](auto x, auto y) { return objects(x) < objects(y); })) {
         std::stable_sort(order.begin(), order.end(), [&](auto x, auto y) { return objects(x) < objects(y); });
     }
+    std::vector<std::uint32_t> set_of_pair(pairs.size());  // a vertex of its set (global numbering below)
+    std::vector<std::uint32_t> joined_a, joined_b;          // per triangle: 1 once its corners are joined
+    std::uint32_t base = 0;                                 // object pairs' vertex ranges, one after another
+    std::vector<std::uint32_t> parent;
+    const auto find = [&](std::uint32_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    const auto unite = [&](std::uint32_t x, std::uint32_t y) {
+        x = find(x);
+        y = find(y);
+        if (x != y) parent[std::max(x, y)] = std::min(x, y);  // the lower index is the root
+    };
+    struct Range {
+        std::size_t begin, end;
+        std::uint32_t base, vertices;
+    };
+    std::vector<Range> ranges;
     for (std::size_t begin = 0; begin < order.size();) {
         std::size_t end = begin;
         while (end < order.size() && objects(order[end]) == objects(order[begin])) ++end;
         const TrianglePair& first = pairs[order[begin]];
-        const ObjectFrame& a = frame.objects[first.obj_a];
-        const ObjectFrame& b = frame.objects[first.obj_b];
-        // Self pairs: both triangles' vertices are one object's, in one array.
-        std::vector<std::uint32_t>& side_b = first.obj_a == first.obj_b ? first_a : first_b;
-        for (std::size_t k = begin; k < end; ++k) {
-            const std::uint32_t i = order[k];
-            for (const std::uint32_t v : a.topology->triangles[pairs[i].tri_a]) join(first_a, v, i);
-            for (const std::uint32_t v : b.topology->triangles[pairs[i].tri_b]) join(side_b, v, i);
-        }
-        for (std::size_t k = begin; k < end; ++k) {
-            const std::uint32_t i = order[k];
-            for (const std::uint32_t v : a.topology->triangles[pairs[i].tri_a]) first_a[v] = UINT32_MAX;
-            for (const std::uint32_t v : b.topology->triangles[pairs[i].tri_b]) side_b[v] = UINT32_MAX;
-        }
+        const bool self = first.obj_a == first.obj_b;
+        const std::uint32_t va = frame.objects[first.obj_a].topology->vertex_count;
+        const std::uint32_t vb = self ? 0 : frame.objects[first.obj_b].topology->vertex_count;
+        ranges.push_back({begin, end, base, va + vb});
+        base += va + vb;
         begin = end;
     }
-    std::vector<std::uint32_t> region_of_root(pairs.size(), UINT32_MAX);
-    std::vector<std::vector<std::uint32_t>> groups;
-    for (std::uint32_t i = 0; i < pairs.size(); ++i) {
-        std::uint32_t& region = region_of_root[sets.find(i)];
-        if (region == UINT32_MAX) {
-            region = static_cast<std::uint32_t>(groups.size());
-            groups.emplace_back();
+    parent.resize(base);
+    std::iota(parent.begin(), parent.end(), 0u);
+    for (const Range& range : ranges) {
+        const TrianglePair& first = pairs[order[range.begin]];
+        const ObjectFrame& a = frame.objects[first.obj_a];
+        const ObjectFrame& b = frame.objects[first.obj_b];
+        const bool self = first.obj_a == first.obj_b;
+        const std::uint32_t offset_b = range.base + (self ? 0 : a.topology->vertex_count);
+        joined_a.assign(a.triangle_count(), 0);
+        if (!self) joined_b.assign(b.triangle_count(), 0);
+        std::vector<std::uint32_t>& marks_b = self ? joined_a : joined_b;
+        const auto join_triangle = [&](const TriIndices& t, std::uint32_t offset, std::uint32_t& mark) {
+            if (mark) return;
+            mark = 1;
+            unite(offset + t[0], offset + t[1]);
+            unite(offset + t[0], offset + t[2]);
+        };
+        for (std::size_t k = range.begin; k < range.end; ++k) {
+            const TrianglePair& pair = pairs[order[k]];
+            const TriIndices& ta = a.topology->triangles[pair.tri_a];
+            const TriIndices& tb = b.topology->triangles[pair.tri_b];
+            join_triangle(ta, range.base, joined_a[pair.tri_a]);
+            join_triangle(tb, offset_b, marks_b[pair.tri_b]);
+            unite(range.base + ta[0], offset_b + tb[0]);
+            set_of_pair[order[k]] = range.base + ta[0];
         }
-        groups[region].push_back(i);
     }
+    // Regions in the order of their first pair; a counting pass sizes each before filling it.
+    std::vector<std::uint32_t> region_of_root(base, UINT32_MAX), region_of_pair(pairs.size());
+    std::vector<std::uint32_t> sizes;
+    for (std::uint32_t i = 0; i < pairs.size(); ++i) {
+        std::uint32_t& region = region_of_root[find(set_of_pair[i])];
+        if (region == UINT32_MAX) {
+            region = static_cast<std::uint32_t>(sizes.size());
+            sizes.push_back(0);
+        }
+        region_of_pair[i] = region;
+        ++sizes[region];
+    }
+    std::vector<std::vector<std::uint32_t>> groups(sizes.size());
+    for (std::size_t r = 0; r < groups.size(); ++r) groups[r].reserve(sizes[r]);
+    for (std::uint32_t i = 0; i < pairs.size(); ++i) groups[region_of_pair[i]].push_back(i);
     return groups;
 }
 
-// Sorted, each once (pairs come sorted by their first triangle, so side A often already is).
-void sort_unique(std::vector<std::uint32_t>& values) {
-    if (!std::is_sorted(values.begin(), values.end())) std::sort(values.begin(), values.end());
-    values.erase(std::unique(values.begin(), values.end()), values.end());
-}
+// Which triangles a region already holds, kept per thread from call to call (a mark is
+// current when it equals the generation), so a region pays for its pairs, not its mesh.
+struct TriangleMarks {
+    std::vector<std::uint32_t> values;
+    std::uint32_t generation = 0;
+    void next(std::size_t size) {
+        if (values.size() < size) values.resize(size, 0);
+        if (++generation == 0) {
+            std::fill(values.begin(), values.end(), 0);
+            generation = 1;
+        }
+    }
+    bool first_time(std::uint32_t i) {
+        if (values[i] == generation) return false;
+        values[i] = generation;
+        return true;
+    }
+};
 
-Region describe(std::span<const TrianglePair> pairs, std::span<const regions::Piece> pieces,
+Region describe(const Frame& frame, std::span<const TrianglePair> pairs, std::span<const regions::Piece> pieces,
                 std::vector<std::uint32_t> indices, const RegionOptions& options) {
     Region region;
     region.obj_a = pairs[indices.front()].obj_a;
@@ -110,9 +134,14 @@ Region describe(std::span<const TrianglePair> pairs, std::span<const regions::Pi
     // A segment two pairs report with the same ends (an edge lying in the other surface, seen
     // from both of its triangles) counts once.
     std::vector<std::pair<std::pair<regions::EndKey, regions::EndKey>, std::uint32_t>> segments;
+    // Each side's triangles once (a triangle is in many pairs of dense contact), sorted after.
+    thread_local TriangleMarks marks_a, marks_b;
+    marks_a.next(frame.objects[region.obj_a].triangle_count());
+    marks_b.next(frame.objects[region.obj_b].triangle_count());
+    TriangleMarks& other = self ? marks_a : marks_b;
     for (const std::uint32_t i : indices) {
-        side_a.push_back(pairs[i].tri_a);
-        (self ? side_a : side_b).push_back(pairs[i].tri_b);
+        if (marks_a.first_time(pairs[i].tri_a)) side_a.push_back(pairs[i].tri_a);
+        if (other.first_time(pairs[i].tri_b)) (self ? side_a : side_b).push_back(pairs[i].tri_b);
         const regions::Piece& piece = pieces[i];
         region.box.extend(piece.ends[0]);
         region.box.extend(piece.ends[1]);
@@ -129,8 +158,8 @@ Region describe(std::span<const TrianglePair> pairs, std::span<const regions::Pi
         region.curve_length += (piece.ends[1] - piece.ends[0]).norm();
         unique_segments.push_back(segments[k].second);
     }
-    sort_unique(side_a);
-    sort_unique(side_b);
+    if (!std::is_sorted(side_a.begin(), side_a.end())) std::sort(side_a.begin(), side_a.end());
+    if (!std::is_sorted(side_b.begin(), side_b.end())) std::sort(side_b.begin(), side_b.end());
     if (options.curves) {
         region.curves = regions::chain_curves(pieces, unique_segments);
         for (const IntersectionCurve& curve : region.curves) region.loops += curve.closed ? 1 : 0;
@@ -151,7 +180,7 @@ std::vector<Region> find_regions(const Frame& frame, std::span<const TrianglePai
     std::vector<Region> result(groups.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, groups.size(), 1), [&](const auto& range) {
         for (std::size_t r = range.begin(); r != range.end(); ++r) {
-            result[r] = describe(pairs, pieces, std::move(groups[r]), options);
+            result[r] = describe(frame, pairs, pieces, std::move(groups[r]), options);
         }
     });
     if (options.penetration) regions::measure_penetration(frame, pairs, pieces, result);
