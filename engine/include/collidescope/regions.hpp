@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
@@ -120,6 +121,12 @@ private:
         std::vector<std::uint32_t> triangles_a, triangles_b;
     };
     std::vector<Previous> m_previous;
+    /// Last frame's regions by triangle, per (objects, side): current where stamp == m_stamp.
+    struct OwnerIndex {
+        std::vector<std::uint32_t> stamp, previous;
+    };
+    std::map<std::pair<std::uint64_t, std::uint32_t>, OwnerIndex> m_owners;
+    std::uint32_t m_stamp = 0;
     std::vector<RegionTrack> m_tracks;
     std::uint32_t m_last_frame = 0;
     bool m_any = false;

@@ -12,52 +12,64 @@ namespace collidescope {
 void RegionTracker::update(std::uint32_t frame, std::vector<Region>& regions) {
     if (m_any && frame != m_last_frame + 1) m_previous.clear();  // a gap: nothing continues
 
-    // Last frame's triangles, each with its region: (objects, side, triangle) -> previous index.
-    struct Owner {
-        std::uint64_t objects;  ///< obj_a << 32 | obj_b
-        std::uint64_t triangle; ///< side << 32 | triangle
-        std::size_t previous;
-        bool operator<(const Owner& o) const { return objects != o.objects ? objects < o.objects : triangle < o.triangle; }
-    };
-    std::vector<Owner> owners;
+    // Last frame's triangles, each with its region: per (objects, side), an array over the
+    // triangles, kept from frame to frame; an entry is current when it carries this stamp.
     const auto objects_of = [](std::uint32_t a, std::uint32_t b) { return std::uint64_t(a) << 32 | b; };
+    if (++m_stamp == 0) {
+        for (auto& [key, index] : m_owners) std::fill(index.stamp.begin(), index.stamp.end(), 0);
+        m_stamp = 1;
+    }
     for (std::size_t p = 0; p < m_previous.size(); ++p) {
         const Previous& previous = m_previous[p];
-        for (const std::uint32_t t : previous.triangles_a) owners.push_back({objects_of(previous.obj_a, previous.obj_b), t, p});
-        for (const std::uint32_t t : previous.triangles_b) {
-            owners.push_back({objects_of(previous.obj_a, previous.obj_b), std::uint64_t(1) << 32 | t, p});
+        for (const std::uint32_t side : {0u, 1u}) {
+            OwnerIndex& index = m_owners[{objects_of(previous.obj_a, previous.obj_b), side}];
+            for (const std::uint32_t t : side == 0 ? previous.triangles_a : previous.triangles_b) {
+                if (t >= index.stamp.size()) {
+                    index.stamp.resize(t + 1 + t / 2, 0);
+                    index.previous.resize(index.stamp.size(), 0);
+                }
+                index.stamp[t] = m_stamp;
+                index.previous[t] = static_cast<std::uint32_t>(p);
+            }
         }
     }
-    std::sort(owners.begin(), owners.end());
     std::vector<std::pair<std::pair<std::uint64_t, double>, std::size_t>> by_box;  // ((objects, box min x), previous)
     for (std::size_t p = 0; p < m_previous.size(); ++p) {
         by_box.push_back({{objects_of(m_previous[p].obj_a, m_previous[p].obj_b), m_previous[p].box.min().x()}, p});
     }
     std::sort(by_box.begin(), by_box.end());
 
-    // weight[r][p]: triangles shared (+1, so a box overlap alone weighs 1 and sharing wins).
-    std::vector<std::map<std::size_t, std::size_t>> weight(regions.size());
+    // weight[r]: (p, triangles shared + 1), by p: a box overlap alone weighs 1, so sharing wins.
+    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> weight(regions.size());
     for (std::size_t r = 0; r < regions.size(); ++r) {
         const std::uint64_t objects = objects_of(regions[r].obj_a, regions[r].obj_b);
-        const auto count = [&](std::uint64_t triangle) {
-            const Owner key{objects, triangle, 0};
-            for (auto it = std::lower_bound(owners.begin(), owners.end(), key);
-                 it != owners.end() && it->objects == objects && it->triangle == triangle; ++it) {
-                std::size_t& w = weight[r][it->previous];
-                w = w == 0 ? 2 : w + 1;
+        std::vector<std::pair<std::size_t, std::size_t>>& w = weight[r];
+        for (const std::uint32_t side : {0u, 1u}) {
+            const auto found = m_owners.find({objects, side});
+            if (found == m_owners.end()) continue;
+            const OwnerIndex& index = found->second;
+            for (const std::uint32_t t : side == 0 ? regions[r].triangles_a : regions[r].triangles_b) {
+                if (t >= index.stamp.size() || index.stamp[t] != m_stamp) continue;
+                const std::size_t p = index.previous[t];
+                auto hit = !w.empty() && w.back().first == p ? w.end() - 1 : std::find_if(w.begin(), w.end(), [&](const auto& e) { return e.first == p; });
+                if (hit == w.end()) {
+                    w.emplace_back(p, 2);
+                } else {
+                    ++hit->second;
+                }
             }
-        };
-        for (const std::uint32_t t : regions[r].triangles_a) count(t);
-        for (const std::uint32_t t : regions[r].triangles_b) count(std::uint64_t(1) << 32 | t);
-        const bool any_shared = !weight[r].empty();
+        }
+        std::sort(w.begin(), w.end());
+        const bool any_shared = !w.empty();
         if (any_shared) continue;
         // Boxes: last frame's regions of the same objects, by the low x of their boxes.
         const auto first = std::lower_bound(by_box.begin(), by_box.end(), objects,
                                             [](const auto& entry, std::uint64_t key) { return entry.first.first < key; });
         for (auto it = first; it != by_box.end() && it->first.first == objects; ++it) {
             if (it->first.second > regions[r].box.max().x()) break;
-            if (m_previous[it->second].box.intersects(regions[r].box)) weight[r][it->second] = 1;
+            if (m_previous[it->second].box.intersects(regions[r].box)) weight[r].emplace_back(it->second, 1);
         }
+        std::sort(weight[r].begin(), weight[r].end());
     }
     // Each previous region's strongest successor; each region's strongest predecessor among
     // those whose strongest successor it is.
