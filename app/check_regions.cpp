@@ -73,16 +73,13 @@ std::string region_json(std::uint32_t frame, const Region& region, const std::ve
     number(out, region.curve_length);
     out += ",\"coplanar_area\":";
     number(out, region.coplanar_area);
-    // Not defined (no closed object, or self-contact): null.
-    for (const auto& [key, value] : {std::pair{",\"inside_area\":[", region.inside_area_a}, std::pair{",", region.inside_area_b},
-                                     std::pair{"],\"depth\":", region.depth}}) {
-        out += key;
-        if (std::isnan(value)) {
-            out += "null";
-        } else {
-            number(out, value);
-        }
-    }
+    // NaN where not defined (no closed object, or self-contact): number() writes null.
+    out += ",\"inside_area\":[";
+    number(out, region.inside_area_a);
+    out += ',';
+    number(out, region.inside_area_b);
+    out += "],\"depth\":";
+    number(out, region.depth);
     out += ",\"box\":[";
     point(out, region.box.min());
     out += ',';
