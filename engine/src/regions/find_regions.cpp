@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <utility>
 
 namespace collidescope {
 namespace {
@@ -24,12 +25,35 @@ namespace {
 std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::span<const TrianglePair> pairs) {
     // The pairs in object-pair order (the pipeline's sorted pairs already are).
     const auto objects = [&](std::uint32_t i) { return std::uint64_t(pairs[i].obj_a) << 32 | pairs[i].obj_b; };
-    std::vector<std::uint32_t> order(pairs.size());
-    std::iota(order.begin(), order.end(), 0u);
-    if (!std::is_sorted(order.begin(), order.end(), [&](auto x, auto y) { return objects(x) < objects(y); })) {
-        std::stable_sort(order.begin(), order.end(), [&](auto x, auto y) { return objects(x) < objects(y); });
+    // Working arrays as long as the pair list, kept from call to call on this thread (first-touch
+    // page faults were a third of the grouping's time on a million pairs).
+    thread_local std::vector<std::uint32_t> order_kept, set_kept, region_kept;
+    const auto sized = [&](std::vector<std::uint32_t>& kept) {
+        if (kept.size() < pairs.size()) kept.resize(pairs.size());
+        return std::span<std::uint32_t>(kept.data(), pairs.size());
+    };
+    bool sorted = true;
+    for (std::size_t i = 1; sorted && i < pairs.size(); ++i) sorted = objects(i - 1) <= objects(i);
+    std::span<std::uint32_t> order;
+    if (!sorted) {
+        // A stable counting sort by object pair (the pipeline sorts by first object and
+        // triangle, so the second objects interleave; a frame has few object pairs).
+        order = sized(order_kept);
+        std::vector<std::pair<std::uint64_t, std::uint32_t>> counts;  // (object pair, pairs), by object pair
+        for (std::uint32_t i = 0; i < pairs.size(); ++i) {
+            const std::uint64_t key = objects(i);
+            auto it = std::lower_bound(counts.begin(), counts.end(), std::pair(key, 0u));
+            if (it == counts.end() || it->first != key) it = counts.insert(it, {key, 0u});
+            ++it->second;
+        }
+        std::uint32_t start = 0;
+        for (auto& [key, count] : counts) start += std::exchange(count, start);  // counts become starts
+        for (std::uint32_t i = 0; i < pairs.size(); ++i) {
+            order[std::lower_bound(counts.begin(), counts.end(), std::pair(objects(i), 0u))->second++] = i;
+        }
     }
-    std::vector<std::uint32_t> set_of_pair(pairs.size());  // a vertex of its set (global numbering below)
+    const auto at = [&](std::size_t k) { return sorted ? static_cast<std::uint32_t>(k) : order[k]; };
+    const std::span<std::uint32_t> set_of_pair = sized(set_kept);  // a vertex of its set (global numbering below)
     std::vector<std::uint32_t> joined_a, joined_b;          // per triangle: 1 once its corners are joined
     std::uint32_t base = 0;                                 // object pairs' vertex ranges, one after another
     std::vector<std::uint32_t> parent;
@@ -47,10 +71,10 @@ std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::spa
         std::uint32_t base, vertices;
     };
     std::vector<Range> ranges;
-    for (std::size_t begin = 0; begin < order.size();) {
+    for (std::size_t begin = 0; begin < pairs.size();) {
         std::size_t end = begin;
-        while (end < order.size() && objects(order[end]) == objects(order[begin])) ++end;
-        const TrianglePair& first = pairs[order[begin]];
+        while (end < pairs.size() && objects(at(end)) == objects(at(begin))) ++end;
+        const TrianglePair& first = pairs[at(begin)];
         const bool self = first.obj_a == first.obj_b;
         const std::uint32_t va = frame.objects[first.obj_a].topology->vertex_count;
         const std::uint32_t vb = self ? 0 : frame.objects[first.obj_b].topology->vertex_count;
@@ -61,7 +85,7 @@ std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::spa
     parent.resize(base);
     std::iota(parent.begin(), parent.end(), 0u);
     for (const Range& range : ranges) {
-        const TrianglePair& first = pairs[order[range.begin]];
+        const TrianglePair& first = pairs[at(range.begin)];
         const ObjectFrame& a = frame.objects[first.obj_a];
         const ObjectFrame& b = frame.objects[first.obj_b];
         const bool self = first.obj_a == first.obj_b;
@@ -76,17 +100,18 @@ std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::spa
             unite(offset + t[0], offset + t[2]);
         };
         for (std::size_t k = range.begin; k < range.end; ++k) {
-            const TrianglePair& pair = pairs[order[k]];
+            const TrianglePair& pair = pairs[at(k)];
             const TriIndices& ta = a.topology->triangles[pair.tri_a];
             const TriIndices& tb = b.topology->triangles[pair.tri_b];
             join_triangle(ta, range.base, joined_a[pair.tri_a]);
             join_triangle(tb, offset_b, marks_b[pair.tri_b]);
             unite(range.base + ta[0], offset_b + tb[0]);
-            set_of_pair[order[k]] = range.base + ta[0];
+            set_of_pair[at(k)] = range.base + ta[0];
         }
     }
     // Regions in the order of their first pair; a counting pass sizes each before filling it.
-    std::vector<std::uint32_t> region_of_root(base, UINT32_MAX), region_of_pair(pairs.size());
+    std::vector<std::uint32_t> region_of_root(base, UINT32_MAX);
+    const std::span<std::uint32_t> region_of_pair = sized(region_kept);
     std::vector<std::uint32_t> sizes;
     for (std::uint32_t i = 0; i < pairs.size(); ++i) {
         std::uint32_t& region = region_of_root[find(set_of_pair[i])];
@@ -172,7 +197,12 @@ Region describe(const Frame& frame, std::span<const TrianglePair> pairs, std::sp
 
 std::vector<Region> find_regions(const Frame& frame, std::span<const TrianglePair> pairs, const RegionOptions& options) {
     if (pairs.empty()) return {};
-    std::vector<regions::Piece> pieces(pairs.size());
+    // Kept from call to call on this thread: a dense frame's pieces are hundreds of megabytes,
+    // and memory touched for the first time (the kernel zeroing its pages) cost as much as
+    // filling it.
+    thread_local std::vector<regions::Piece> kept;
+    if (kept.size() < pairs.size()) kept.resize(pairs.size());
+    const std::span<regions::Piece> pieces(kept.data(), pairs.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 1024), [&](const auto& range) {
         for (std::size_t i = range.begin(); i != range.end(); ++i) pieces[i] = regions::intersect(frame, pairs[i]);
     });
@@ -184,6 +214,7 @@ std::vector<Region> find_regions(const Frame& frame, std::span<const TrianglePai
         }
     });
     if (options.penetration) regions::measure_penetration(frame, pairs, pieces, result);
+
     return result;
 }
 
