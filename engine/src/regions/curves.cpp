@@ -5,6 +5,7 @@
 #include "curves.hpp"
 
 #include <algorithm>
+#include <span>
 
 namespace collidescope::regions {
 namespace {
@@ -17,7 +18,15 @@ struct Incidence {
 struct Graph {
     std::vector<const Piece*> segments;
     std::vector<std::array<std::uint32_t, 2>> nodes_of;  ///< per segment, the node of each end
-    std::vector<std::vector<Incidence>> incident;        ///< per node
+    /// Node k's segment ends are ends[node_begin[k] .. node_begin[k + 1]) (one array, not a
+    /// vector per node: a dense region has a node per segment).
+    std::vector<std::uint32_t> node_begin;
+    std::vector<Incidence> ends;
+
+    std::size_t nodes() const { return node_begin.size() - 1; }
+    std::span<const Incidence> incident(std::uint32_t node) const {
+        return {ends.data() + node_begin[node], node_begin[node + 1] - node_begin[node]};
+    }
 };
 
 Graph build_graph(std::span<const Piece> pieces, std::span<const std::uint32_t> indices) {
@@ -37,14 +46,16 @@ Graph build_graph(std::span<const Piece> pieces, std::span<const std::uint32_t> 
     std::sort(entries.begin(), entries.end(),
               [](const Entry& x, const Entry& y) { return x.key < y.key; });
     graph.nodes_of.resize(graph.segments.size());
+    graph.ends.reserve(entries.size());
     for (std::size_t i = 0; i < entries.size(); ++i) {
         // A key without a feature joins nothing: a node of its own.
         const bool same = i > 0 && entries[i].key.valid && entries[i].key == entries[i - 1].key;
-        if (!same) graph.incident.emplace_back();
-        const auto node = static_cast<std::uint32_t>(graph.incident.size() - 1);
-        graph.incident.back().push_back({entries[i].segment, entries[i].end});
+        if (!same) graph.node_begin.push_back(static_cast<std::uint32_t>(i));
+        const auto node = static_cast<std::uint32_t>(graph.node_begin.size() - 1);
+        graph.ends.push_back({entries[i].segment, entries[i].end});
         graph.nodes_of[entries[i].segment][entries[i].end] = node;
     }
+    graph.node_begin.push_back(static_cast<std::uint32_t>(entries.size()));
     return graph;
 }
 
@@ -60,7 +71,7 @@ IntersectionCurve walk(const Graph& graph, std::uint32_t node, Incidence first, 
         const std::uint32_t far = 1 - step.end;
         curve.length += (piece.ends[far] - piece.ends[step.end]).norm();
         const std::uint32_t next_node = graph.nodes_of[step.segment][far];
-        const auto& around = graph.incident[next_node];
+        const std::span<const Incidence> around = graph.incident(next_node);
         if (next_node == start && around.size() == 2) {
             curve.closed = true;
             break;
@@ -80,9 +91,9 @@ std::vector<IntersectionCurve> chain_curves(std::span<const Piece> pieces, std::
     const Graph graph = build_graph(pieces, indices);
     std::vector<bool> used(graph.segments.size(), false);
     std::vector<IntersectionCurve> curves;
-    for (std::uint32_t node = 0; node < graph.incident.size(); ++node) {
-        if (graph.incident[node].size() == 2) continue;
-        for (const Incidence& incidence : graph.incident[node]) {
+    for (std::uint32_t node = 0; node < graph.nodes(); ++node) {
+        if (graph.incident(node).size() == 2) continue;
+        for (const Incidence& incidence : graph.incident(node)) {
             if (!used[incidence.segment]) curves.push_back(walk(graph, node, incidence, used));
         }
     }
