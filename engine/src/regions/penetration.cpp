@@ -206,9 +206,13 @@ public:
         std::sort(by_triangle.begin(), by_triangle.end(),
                   [&](std::uint32_t a, std::uint32_t b) { return tri_x(m_pairs[a]) < tri_x(m_pairs[b]); });
         double area = 0;
-        std::vector<std::uint32_t> inside;  // X's vertices inside Y
-        const auto reach = [&](std::uint32_t v) {
-            if (m_scratch.vertex.mark(v)) inside.push_back(v);
+        std::vector<std::uint32_t> inside;  // X's vertices inside Y, in the order reached
+        std::vector<std::uint32_t> from;    // per inside vertex: the one the flood came from (none: k_none)
+        constexpr std::uint32_t k_none = UINT32_MAX;
+        const auto reach = [&](std::uint32_t v, std::uint32_t parent) {
+            if (!m_scratch.vertex.mark(v)) return;
+            inside.push_back(v);
+            from.push_back(parent);
         };
         std::vector<Oriented> segments;
         std::map<std::uint32_t, double> touching;  // triangles meeting Y without a segment: coplanar area
@@ -228,7 +232,7 @@ public:
             }
             area += t.inside_area;
             for (int k = 0; k < 3; ++k) {
-                if (t.corners[k] == Status::Inside) reach(xo.topology->triangles[tri][k]);
+                if (t.corners[k] == Status::Inside) reach(xo.topology->triangles[tri][k], k_none);
             }
             begin = end;
         }
@@ -248,15 +252,26 @@ public:
                     continue;
                 }
                 area += full;
-                for (const std::uint32_t w : xo.topology->triangles[t]) reach(w);
+                for (const std::uint32_t w : xo.topology->triangles[t]) reach(w, static_cast<std::uint32_t>(next));
             }
         }
-        // The deepest: the last vertices the flood reached lie farthest from the curves, so
-        // go backwards; a search ends once the vertex is known not to beat the deepest so far.
+        // The deepest. Seeded by the vertex the flood reached last (farthest from the curves),
+        // then in flood order, each vertex with an upper bound on its distance to Y: its
+        // flood parent's bound plus the edge between them (the distance is 1-Lipschitz). Only a
+        // vertex whose bound exceeds the deepest so far is searched, and that search stops at
+        // the first triangle within the deepest (the distance to it is again an upper bound).
         double depth = 0;
         if (!inside.empty()) {
             if (!m_distance) m_distance.emplace(*yo.topology, yo.vertices.span());
-            for (auto v = inside.rbegin(); v != inside.rend(); ++v) depth = std::max(depth, m_distance->beyond(xo.vertices[*v], depth));
+            depth = (*m_distance)(xo.vertices[inside.back()]);
+            std::vector<double> bound(inside.size());
+            for (std::size_t k = 0; k < inside.size(); ++k) {
+                const Vec3& v = xo.vertices[inside[k]];
+                const double reachable = from[k] == k_none ? std::numeric_limits<double>::infinity()
+                                                           : bound[from[k]] + (v - xo.vertices[inside[from[k]]]).norm();
+                bound[k] = reachable > depth ? std::min(reachable, m_distance->beyond(v, depth)) : reachable;
+                depth = std::max(depth, bound[k]);
+            }
         }
         return {area, depth};
     }
