@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace collidescope::replays {
@@ -72,13 +73,18 @@ void draw_region_curves(const FrameData& frame, const Camera& camera, const Rect
             }
             flush();
         }
-        // The label at the box's centre: "R3", on a dark plate.
+        // The label at the box's centre: "R3", with its depth where defined ("R3 0.21 deep"), on
+        // a dark plate.
         const std::array<double, 3> centre =
             camera.project(0.5 * (region.box[0] + region.box[3]), 0.5 * (region.box[1] + region.box[4]),
                            0.5 * (region.box[2] + region.box[5]));
         if (centre[2] < -1 || centre[2] > 1) continue;
-        char label[32];
-        std::snprintf(label, sizeof label, "R%u", region.id);
+        char label[48];
+        if (std::isnan(region.depth)) {
+            std::snprintf(label, sizeof label, "R%u", region.id);
+        } else {
+            std::snprintf(label, sizeof label, "R%u %.3g deep", region.id, region.depth);
+        }
         const ImVec2 size = ImGui::CalcTextSize(label);
         const ImVec2 at{static_cast<float>(centre[0]) + thickness * 2, static_cast<float>(centre[1]) - size.y - thickness * 2};
         draw->AddRectFilled(ImVec2(at.x - 2, at.y - 1), ImVec2(at.x + size.x + 2, at.y + size.y + 1), IM_COL32(0, 0, 0, 200), 3.0f);
