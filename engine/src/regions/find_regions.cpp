@@ -5,6 +5,7 @@
 #include "curves.hpp"
 #include "pair_intersection.hpp"
 #include "penetration.hpp"
+#include "stamped_marks.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -24,7 +25,7 @@ namespace {
 // its six vertices took six.
 std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::span<const TrianglePair> pairs) {
     // The pairs in object-pair order (the pipeline's sorted pairs already are).
-    const auto objects = [&](std::uint32_t i) { return std::uint64_t(pairs[i].obj_a) << 32 | pairs[i].obj_b; };
+    const auto objects = [&](std::size_t i) { return std::uint64_t(pairs[i].obj_a) << 32 | pairs[i].obj_b; };
     // Working arrays as long as the pair list, kept from call to call on this thread (first-touch
     // page faults were a third of the grouping's time on a million pairs).
     thread_local std::vector<std::uint32_t> order_kept, set_kept, region_kept;
@@ -54,7 +55,7 @@ std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::spa
     }
     const auto at = [&](std::size_t k) { return sorted ? static_cast<std::uint32_t>(k) : order[k]; };
     const std::span<std::uint32_t> set_of_pair = sized(set_kept);  // a vertex of its set (global numbering below)
-    std::vector<std::uint32_t> joined_a, joined_b;          // per triangle: 1 once its corners are joined
+    thread_local regions::StampedMarks joined_a, joined_b;  // triangles whose corners are joined
     std::uint32_t base = 0;                                 // object pairs' vertex ranges, one after another
     std::vector<std::uint32_t> parent;
     const auto find = [&](std::uint32_t x) {
@@ -90,12 +91,11 @@ std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::spa
         const ObjectFrame& b = frame.objects[first.obj_b];
         const bool self = first.obj_a == first.obj_b;
         const std::uint32_t offset_b = range.base + (self ? 0 : a.topology->vertex_count);
-        joined_a.assign(a.triangle_count(), 0);
-        if (!self) joined_b.assign(b.triangle_count(), 0);
-        std::vector<std::uint32_t>& marks_b = self ? joined_a : joined_b;
-        const auto join_triangle = [&](const TriIndices& t, std::uint32_t offset, std::uint32_t& mark) {
-            if (mark) return;
-            mark = 1;
+        joined_a.next(a.triangle_count());
+        if (!self) joined_b.next(b.triangle_count());
+        regions::StampedMarks& marks_b = self ? joined_a : joined_b;
+        const auto join_triangle = [&](const TriIndices& t, std::uint32_t offset, regions::StampedMarks& marks, std::uint32_t tri) {
+            if (!marks.mark(tri)) return;
             unite(offset + t[0], offset + t[1]);
             unite(offset + t[0], offset + t[2]);
         };
@@ -103,8 +103,8 @@ std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::spa
             const TrianglePair& pair = pairs[at(k)];
             const TriIndices& ta = a.topology->triangles[pair.tri_a];
             const TriIndices& tb = b.topology->triangles[pair.tri_b];
-            join_triangle(ta, range.base, joined_a[pair.tri_a]);
-            join_triangle(tb, offset_b, marks_b[pair.tri_b]);
+            join_triangle(ta, range.base, joined_a, pair.tri_a);
+            join_triangle(tb, offset_b, marks_b, pair.tri_b);
             unite(range.base + ta[0], offset_b + tb[0]);
             set_of_pair[at(k)] = range.base + ta[0];
         }
@@ -128,25 +128,6 @@ std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::spa
     return groups;
 }
 
-// Which triangles a region already holds, kept per thread from call to call (a mark is
-// current when it equals the generation), so a region pays for its pairs, not its mesh.
-struct TriangleMarks {
-    std::vector<std::uint32_t> values;
-    std::uint32_t generation = 0;
-    void next(std::size_t size) {
-        if (values.size() < size) values.resize(size, 0);
-        if (++generation == 0) {
-            std::fill(values.begin(), values.end(), 0);
-            generation = 1;
-        }
-    }
-    bool first_time(std::uint32_t i) {
-        if (values[i] == generation) return false;
-        values[i] = generation;
-        return true;
-    }
-};
-
 Region describe(const Frame& frame, std::span<const TrianglePair> pairs, std::span<const regions::Piece> pieces,
                 std::vector<std::uint32_t> indices, const RegionOptions& options) {
     Region region;
@@ -160,13 +141,13 @@ Region describe(const Frame& frame, std::span<const TrianglePair> pairs, std::sp
     // from both of its triangles) counts once.
     std::vector<std::pair<std::pair<regions::EndKey, regions::EndKey>, std::uint32_t>> segments;
     // Each side's triangles once (a triangle is in many pairs of dense contact), sorted after.
-    thread_local TriangleMarks marks_a, marks_b;
+    thread_local regions::StampedMarks marks_a, marks_b;
     marks_a.next(frame.objects[region.obj_a].triangle_count());
     marks_b.next(frame.objects[region.obj_b].triangle_count());
-    TriangleMarks& other = self ? marks_a : marks_b;
+    regions::StampedMarks& other = self ? marks_a : marks_b;
     for (const std::uint32_t i : indices) {
-        if (marks_a.first_time(pairs[i].tri_a)) side_a.push_back(pairs[i].tri_a);
-        if (other.first_time(pairs[i].tri_b)) (self ? side_a : side_b).push_back(pairs[i].tri_b);
+        if (marks_a.mark(pairs[i].tri_a)) side_a.push_back(pairs[i].tri_a);
+        if (other.mark(pairs[i].tri_b)) (self ? side_a : side_b).push_back(pairs[i].tri_b);
         const regions::Piece& piece = pieces[i];
         region.box.extend(piece.ends[0]);
         region.box.extend(piece.ends[1]);

@@ -17,6 +17,7 @@
 #include "penetration.hpp"
 
 #include "mesh_shape.hpp"
+#include "stamped_marks.hpp"
 #include "surface_distance.hpp"
 
 #include "collidescope/geometry.hpp"
@@ -142,27 +143,9 @@ TriangleMeasure measure_triangle(const ObjectFrame& x, std::uint32_t tri, std::s
     return result;
 }
 
-// Marks kept from call to call (per thread), so that a frame pays for what it marks, not for
-// clearing arrays as long as the meshes: a mark is current when it equals its generation.
-struct Marks {
-    std::vector<std::uint32_t> values;
-    std::uint32_t generation = 0;
-    void next(std::size_t size) {
-        if (values.size() < size) values.resize(size, 0);
-        if (++generation == 0) {
-            std::fill(values.begin(), values.end(), 0);
-            generation = 1;
-        }
-    }
-    bool marked(std::size_t i) const { return values[i] == generation; }
-    bool mark(std::size_t i) {  ///< false when it already was
-        if (values[i] == generation) return false;
-        values[i] = generation;
-        return true;
-    }
-};
+// Per thread, reused over calls.
 struct Scratch {
-    Marks colliding, vertex, triangle;
+    StampedMarks colliding, vertex, triangle;
 };
 Scratch& scratch() {
     thread_local Scratch s;
@@ -293,7 +276,14 @@ private:
             double weight = 0, first_change = 0, second_change = 0;
             int count = 0;
         };
-        std::map<std::pair<EndKey, EndKey>, Shared> shared;
+        // A triangle has a handful of segments: a short list, searched, not a map per triangle.
+        std::vector<std::pair<std::pair<EndKey, EndKey>, Shared>> shared;
+        const auto group_of = [&](const std::pair<EndKey, EndKey>& keys) -> Shared& {
+            for (auto& [k, group] : shared) {
+                if (k == keys) return group;
+            }
+            return shared.emplace_back(keys, Shared{}).second;
+        };
         std::vector<Oriented> found;
         for (const std::uint32_t i : indices) {
             const Piece& piece = m_pieces[i];
@@ -321,7 +311,7 @@ private:
             if (s.to_position) s.to_change = change(*s.to_position, 1);
             if (s.from_key.valid && s.to_key.valid) {
                 const bool forward = s.from_key < s.to_key;
-                Shared& group = shared[forward ? std::pair(s.from_key, s.to_key) : std::pair(s.to_key, s.from_key)];
+                Shared& group = group_of(forward ? std::pair(s.from_key, s.to_key) : std::pair(s.to_key, s.from_key));
                 if (group.count++ == 0) found.push_back(s);
                 group.weight += forward ? 1 : -1;
                 group.first_change += forward ? s.from_change : s.to_change;
@@ -334,7 +324,7 @@ private:
             if (s.from_key.valid && s.to_key.valid) {
                 // The faces reporting it, net, as seen in this copy's direction.
                 const bool forward = s.from_key < s.to_key;
-                const Shared& group = shared.at(forward ? std::pair(s.from_key, s.to_key) : std::pair(s.to_key, s.from_key));
+                const Shared& group = group_of(forward ? std::pair(s.from_key, s.to_key) : std::pair(s.to_key, s.from_key));
                 s.weight = (forward ? group.weight : -group.weight) / group.count;
                 s.from_change = (forward ? group.first_change : group.second_change) / group.count;
                 s.to_change = (forward ? group.second_change : group.first_change) / group.count;
