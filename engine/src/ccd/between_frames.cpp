@@ -1,0 +1,224 @@
+// Between-frames detection: each object's AABB tree (bvh/) fitted to its triangles' swept
+// boxes (the box of a triangle's corners at both ends, which holds the triangle at every time
+// between, as the motion is linear), kept from interval to interval and refit; the trees of
+// every object pair whose swept boxes meet are walked together (and each object's own, with
+// self-collision), and each pair of triangles whose swept boxes overlap is tested
+// (pair_motion.hpp) where the walk finds it, in parallel over the walk's top items.
+
+#include "collidescope/between_frames.hpp"
+
+#include "bvh/bvh.hpp"
+#include "ccd/pair_motion.hpp"
+#include "ccd/interval_checks.hpp"
+#include "stats/stopwatch.hpp"
+
+#include "collidescope/error.hpp"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <map>
+
+namespace collidescope {
+namespace {
+
+using bvh::Aabb;
+using bvh::Tree;
+
+// One object's swept tree, kept while its topology stays.
+struct SweptTree {
+    std::uint64_t revision = 0;
+    Tree tree;
+    std::vector<Aabb> node_boxes, leaf_boxes;  // the boxes at t = 0, while the t = 1 ones are fit
+};
+
+// Fits `swept` to the triangles' boxes over the interval: refit (or build) at the end, then
+// at the start, and the union of the two.
+void fit_swept(SweptTree& swept, const Topology& topology, std::span<const Vec3> from, std::span<const Vec3> to) {
+    Tree& tree = swept.tree;
+    if (swept.revision != topology.revision || topology.revision == 0 || tree.empty()) {
+        bvh::build_tree(topology.triangles, to, bvh::BuildConfig{}, tree);
+        swept.revision = topology.revision;
+    } else {
+        const bvh::RefitStats refit = bvh::refit(tree, topology.triangles, to);
+        if (refit.quality > 2) bvh::build_tree(topology.triangles, to, bvh::BuildConfig{}, tree);  // degraded: rebuild
+    }
+    if (tree.empty()) return;
+    swept.node_boxes.resize(tree.nodes.size());
+    swept.leaf_boxes.resize(tree.leaf_boxes.size());
+    for (std::size_t i = 0; i < tree.nodes.size(); ++i) swept.node_boxes[i] = tree.nodes[i].box;
+    for (std::size_t i = 0; i < tree.leaf_boxes.size(); ++i) swept.leaf_boxes[i] = tree.leaf_boxes[i];
+    bvh::refit(tree, topology.triangles, from);
+    for (std::size_t i = 0; i < tree.nodes.size(); ++i) tree.nodes[i].box.grow(swept.node_boxes[i]);
+    for (std::size_t i = 0; i < tree.leaf_boxes.size(); ++i) tree.leaf_boxes[i].grow(swept.leaf_boxes[i]);
+}
+
+// A unit of the walk: node a of object x against node b of object y, or (self) below one node.
+struct Item {
+    std::uint32_t x, y, a, b;
+    bool self;
+};
+
+struct ThreadResult {
+    std::vector<IntervalContact> contacts;
+    std::uint64_t candidates = 0, start_contacts = 0, queries = 0, boxes = 0;
+};
+
+class Walk {
+public:
+    Walk(const Frame& from, const Frame& to, std::span<const SweptTree* const> trees, double tolerance,
+         std::uint32_t max_boxes)
+        : m_from(from), m_to(to), m_trees(trees), m_tolerance(tolerance), m_max_boxes(max_boxes) {}
+
+    // Expands `item` one step: follow-up items onto `stack`, leaf pairs tested.
+    void step(const Item& item, std::vector<Item>& stack, ThreadResult& out) const {
+        const Tree& tx = m_trees[item.x]->tree;
+        const Tree& ty = m_trees[item.y]->tree;
+        const bvh::Node& na = tx.nodes[item.a];
+        if (item.self) {
+            if (na.is_leaf()) {
+                for (std::uint32_t i = 0; i < na.count; ++i)
+                    for (std::uint32_t j = i + 1; j < na.count; ++j) leaf_pair(item.x, tx, na.index + i, item.y, ty, na.index + j, out);
+                return;
+            }
+            const std::uint32_t left = item.a + 1, right = na.index;
+            stack.push_back({item.x, item.x, left, right, false});
+            stack.push_back({item.x, item.x, right, right, true});
+            stack.push_back({item.x, item.x, left, left, true});
+            return;
+        }
+        const bvh::Node& nb = ty.nodes[item.b];
+        if (!bvh::overlaps(na.box, nb.box)) return;
+        if (na.is_leaf() && nb.is_leaf()) {
+            for (std::uint32_t i = 0; i < na.count; ++i)
+                for (std::uint32_t j = 0; j < nb.count; ++j) leaf_pair(item.x, tx, na.index + i, item.y, ty, nb.index + j, out);
+            return;
+        }
+        // Split the larger (or the inner) node.
+        const bool split_a = !na.is_leaf() && (nb.is_leaf() || na.box.half_area() >= nb.box.half_area());
+        if (split_a) {
+            stack.push_back({item.x, item.y, item.a + 1, item.b, false});
+            stack.push_back({item.x, item.y, na.index, item.b, false});
+        } else {
+            stack.push_back({item.x, item.y, item.a, item.b + 1, false});
+            stack.push_back({item.x, item.y, item.a, nb.index, false});
+        }
+    }
+
+private:
+    // Slots sa of x's tree and sb of y's: a candidate when their swept boxes overlap.
+    void leaf_pair(std::uint32_t x, const Tree& tx, std::uint32_t sa, std::uint32_t y, const Tree& ty, std::uint32_t sb,
+                   ThreadResult& out) const {
+        if (!bvh::overlaps(tx.leaf_boxes[sa], ty.leaf_boxes[sb])) return;
+        ++out.candidates;
+        const TrianglePair pair = make_pair_ordered(x, tx.triangle_ids[sa], y, ty.triangle_ids[sb]);
+        ccd::PairMotion motion;
+        const ObjectFrame& a0 = m_from.objects[pair.obj_a];
+        const ObjectFrame& a1 = m_to.objects[pair.obj_a];
+        const ObjectFrame& b0 = m_from.objects[pair.obj_b];
+        const ObjectFrame& b1 = m_to.objects[pair.obj_b];
+        motion.ia = a0.topology->triangles[pair.tri_a];
+        motion.ib = b0.topology->triangles[pair.tri_b];
+        for (int i = 0; i < 3; ++i) {
+            motion.a[i] = {a0.vertices[motion.ia[i]], a1.vertices[motion.ia[i]]};
+            motion.b[i] = {b0.vertices[motion.ib[i]], b1.vertices[motion.ib[i]]};
+        }
+        motion.self = pair.obj_a == pair.obj_b;
+        const ccd::PairOutcome outcome = ccd::test_pair(motion, m_tolerance, m_max_boxes);
+        out.queries += outcome.queries;
+        out.boxes += outcome.boxes;
+        out.start_contacts += outcome.start_contact;
+        if (outcome.contact) {
+            out.contacts.push_back({pair, outcome.toi, !outcome.start_contact && !outcome.end_contact, outcome.resolved});
+        }
+    }
+
+    const Frame& m_from;
+    const Frame& m_to;
+    std::span<const SweptTree* const> m_trees;
+    double m_tolerance;
+    std::uint32_t m_max_boxes;
+};
+
+}  // namespace
+
+struct BetweenFrames::State {
+    std::vector<SweptTree> trees;
+};
+
+BetweenFrames::BetweenFrames(BetweenFramesOptions options) : m_options(options), m_state(std::make_unique<State>()) {}
+BetweenFrames::~BetweenFrames() = default;
+
+IntervalResult BetweenFrames::detect(const Frame& from, const Frame& to) {
+    const Stopwatch whole;
+    ccd::check_interval(from, to);
+    IntervalResult result;
+    IntervalStats& stats = result.stats;
+    stats.tolerance = ccd::interval_tolerance(from, to, m_options.tolerance);
+    const std::size_t n = from.objects.size();
+    m_state->trees.resize(n);
+    Stopwatch broad;
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+        fit_swept(m_state->trees[i], *from.objects[i].topology, from.objects[i].vertices.span(),
+                  to.objects[i].vertices.span());
+    });
+    stats.broad_ms = broad.elapsed_ms();
+    const Stopwatch narrow;
+    std::vector<const SweptTree*> trees;
+    for (const SweptTree& t : m_state->trees) trees.push_back(&t);
+    const Walk walk(from, to, trees, stats.tolerance, m_options.max_boxes);
+    // The roots: every object pair whose swept boxes meet, and each object's own.
+    std::vector<Item> items;
+    for (std::uint32_t x = 0; x < n; ++x) {
+        if (trees[x]->tree.empty()) continue;
+        if (m_options.self_collision) items.push_back({x, x, 0, 0, true});
+        for (std::uint32_t y = x + 1; y < n; ++y) {
+            if (!trees[y]->tree.empty() && bvh::overlaps(trees[x]->tree.nodes[0].box, trees[y]->tree.nodes[0].box)) {
+                items.push_back({x, y, 0, 0, false});
+            }
+        }
+    }
+    // Breadth-first until there are enough items for the threads (a fixed number, so the
+    // counts do not depend on the thread count), then each item to its end on one thread.
+    tbb::enumerable_thread_specific<ThreadResult> per_thread;
+    {
+        ThreadResult& serial = per_thread.local();
+        constexpr std::size_t k_items = 256;
+        std::vector<Item> next;
+        while (!items.empty() && items.size() < k_items) {
+            next.clear();
+            for (const Item& item : items) walk.step(item, next, serial);
+            items.swap(next);
+        }
+    }
+    tbb::parallel_for(std::size_t{0}, items.size(), [&](std::size_t k) {
+        ThreadResult& out = per_thread.local();
+        thread_local std::vector<Item> stack;
+        stack.assign(1, items[k]);
+        while (!stack.empty()) {
+            const Item item = stack.back();
+            stack.pop_back();
+            walk.step(item, stack, out);
+        }
+    });
+    for (ThreadResult& t : per_thread) {
+        result.contacts.insert(result.contacts.end(), t.contacts.begin(), t.contacts.end());
+        stats.candidate_pairs += t.candidates;
+        stats.start_contacts += t.start_contacts;
+        stats.primitive_queries += t.queries;
+        stats.inclusion_boxes += t.boxes;
+    }
+    std::sort(result.contacts.begin(), result.contacts.end(),
+              [](const IntervalContact& a, const IntervalContact& b) { return a.pair < b.pair; });
+    for (const IntervalContact& c : result.contacts) {
+        stats.pass_throughs += c.pass_through;
+        stats.unresolved += !c.resolved;
+    }
+    stats.contacts = result.contacts.size();
+    stats.narrow_ms = narrow.elapsed_ms();
+    stats.ms = whole.elapsed_ms();
+    return result;
+}
+
+}  // namespace collidescope

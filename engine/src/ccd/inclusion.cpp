@@ -1,0 +1,166 @@
+// Inclusion-based root finding (after Wang et al. 2021, "Tight-Inclusion"): boxes of
+// (t, u, v) in order of their earliest time, each excluded when some coordinate of F is
+// certainly non-zero over it, accepted when every coordinate's inclusion is within δ of 0,
+// else split along the parameter that moves F the most.
+//
+// Rounding. The eight corner values are computed in double from the input coordinates; with M
+// the largest magnitude of a coordinate (that axis, over every input point) and u = 2^-53, the
+// differences X0 = p0 - a0 and the like are within 2Mu of exact, DX = X1 - X0 within 9Mu,
+// X(t) = X0 + t DX within 20Mu (|X(t)| <= 6M), u Y(t) within 26Mu, and F = (X + uY) + vZ
+// within 102Mu. The filter below uses 512 M u: five times that. A coordinate is excluded only
+// when all eight values lie beyond it on one side, so a box that holds a zero is never
+// excluded: no false negative. The box parameters are dyadic (halvings of [0, 1]), so t, u
+// and v themselves are exact.
+
+#include "ccd/inclusion.hpp"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace collidescope::ccd {
+namespace {
+
+// F(t, u, v) = X(t) + u Y(t) + v Z(t) with X(t) = x0 + t dx (and so on), per axis.
+struct Function {
+    Vec3 x0, dx, y0, dy, z0, dz;
+    Vec3 error;  ///< per axis: the bound on a corner value's rounding error
+};
+
+Function make_function(const Path& x_from, const Path& x_to, const Path& y_from, const Path& y_to, const Path& z_from,
+                       const Path& z_to, double magnitude_scale, const Vec3& magnitude) {
+    // X(t) = x_from(t) - x_to(t), likewise Y and Z: each a difference of two moving points.
+    Function f;
+    const Vec3 x0 = x_from[0] - x_to[0], x1 = x_from[1] - x_to[1];
+    const Vec3 y0 = y_from[0] - y_to[0], y1 = y_from[1] - y_to[1];
+    const Vec3 z0 = z_from[0] - z_to[0], z1 = z_from[1] - z_to[1];
+    f.x0 = x0;
+    f.dx = x1 - x0;
+    f.y0 = y0;
+    f.dy = y1 - y0;
+    f.z0 = z0;
+    f.dz = z1 - z0;
+    f.error = magnitude * magnitude_scale + Vec3::Constant(64 * std::numeric_limits<double>::denorm_min());
+    return f;
+}
+
+Vec3 largest_magnitude(std::initializer_list<const Path*> paths) {
+    Vec3 m = Vec3::Zero();
+    for (const Path* path : paths) m = m.cwiseMax(path->at(0).cwiseAbs()).cwiseMax(path->at(1).cwiseAbs());
+    return m;
+}
+
+struct Box {
+    double t0, t1, u0, u1, v0, v1;
+    std::uint32_t level = 0;  ///< halvings from the whole domain
+};
+
+// The solver. `simplex`: the domain is u + v <= 1 (vertex-face), else the unit square.
+QueryResult solve(const Function& f, bool simplex, const QueryConfig& config) {
+    QueryResult result;
+    thread_local std::vector<Box> heap;
+    heap.clear();
+    // A min-heap on t0, the deeper box first among equal times (ties are common: u and v
+    // halves share their t0), so a contact set wider than a point is descended into, not
+    // spread over breadth-first.
+    const auto later = [](const Box& a, const Box& b) { return a.t0 > b.t0 || (a.t0 == b.t0 && a.level < b.level); };
+    heap.push_back({0, 1, 0, 1, 0, 1, 0});
+    while (!heap.empty()) {
+        std::pop_heap(heap.begin(), heap.end(), later);
+        const Box box = heap.back();
+        heap.pop_back();
+        if (box.t0 > config.t_max) break;  // every box left is later still
+        if (simplex && box.u0 + box.v0 > 1) continue;
+        if (++result.boxes > config.max_boxes) {
+            // Give up conservatively: the earliest time not excluded (this box is the earliest).
+            result.hit = true;
+            result.toi = box.t0;
+            result.resolved = false;
+            return result;
+        }
+        // The eight corners, index bits: 1 t, 2 u, 4 v.
+        std::array<Vec3, 8> value;
+        for (int corner = 0; corner < 8; ++corner) {
+            const double t = corner & 1 ? box.t1 : box.t0;
+            const double u = corner & 2 ? box.u1 : box.u0;
+            const double v = corner & 4 ? box.v1 : box.v0;
+            for (int k = 0; k < 3; ++k) {
+                const double x = f.x0[k] + t * f.dx[k];
+                const double y = f.y0[k] + t * f.dy[k];
+                const double z = f.z0[k] + t * f.dz[k];
+                value[corner][k] = (x + u * y) + v * z;
+            }
+        }
+        bool excluded = false, within = true;
+        for (int k = 0; k < 3 && !excluded; ++k) {
+            double lo = value[0][k], hi = value[0][k];
+            for (int corner = 1; corner < 8; ++corner) {
+                lo = std::min(lo, value[corner][k]);
+                hi = std::max(hi, value[corner][k]);
+            }
+            excluded = lo > f.error[k] || hi < -f.error[k];
+            within = within && hi - lo + 2 * f.error[k] <= config.tolerance;
+        }
+        if (excluded) continue;
+        if (within) {
+            // Every value over the box is within δ of 0, the box's earliest corner (t0, u0,
+            // v0) is in the domain, and no earlier box holds a zero.
+            result.hit = true;
+            result.toi = box.t0;
+            return result;
+        }
+        // Split the parameter along which F changes most over the box.
+        std::array<double, 3> change{0, 0, 0};
+        for (int corner = 0; corner < 8; ++corner) {
+            for (int d = 0; d < 3; ++d) {
+                if (corner & (1 << d)) continue;
+                const Vec3 step = value[corner | (1 << d)] - value[corner];
+                change[d] = std::max(change[d], step.cwiseAbs().maxCoeff());
+            }
+        }
+        int d = static_cast<int>(std::max_element(change.begin(), change.end()) - change.begin());
+        const std::array<double, 3> width{box.t1 - box.t0, box.u1 - box.u0, box.v1 - box.v0};
+        // Nothing left to halve (values flat to within the rounding bound, wider than δ):
+        // a contact at this box's time, not proven within δ.
+        constexpr double k_smallest = 0x1p-60;
+        if (width[d] < k_smallest) {
+            d = width[0] >= k_smallest ? 0 : width[1] >= k_smallest ? 1 : width[2] >= k_smallest ? 2 : -1;
+            if (d < 0) {
+                result.hit = true;
+                result.toi = box.t0;
+                result.resolved = false;
+                return result;
+            }
+        }
+        Box low = box, high = box;
+        low.level = high.level = box.level + 1;
+        if (d == 0) low.t1 = high.t0 = 0.5 * (box.t0 + box.t1);
+        if (d == 1) low.u1 = high.u0 = 0.5 * (box.u0 + box.u1);
+        if (d == 2) low.v1 = high.v0 = 0.5 * (box.v0 + box.v1);
+        heap.push_back(low);
+        std::push_heap(heap.begin(), heap.end(), later);
+        heap.push_back(high);
+        std::push_heap(heap.begin(), heap.end(), later);
+    }
+    return result;
+}
+
+constexpr double k_error_scale = 512 * 0x1p-53;
+
+}  // namespace
+
+QueryResult vertex_face(const Path& p, const Path& a, const Path& b, const Path& c, const QueryConfig& config) {
+    // F = (p - a) + u (a - b) + v (a - c).
+    const Vec3 magnitude = largest_magnitude({&p, &a, &b, &c});
+    return solve(make_function(p, a, a, b, a, c, k_error_scale, magnitude), true, config);
+}
+
+QueryResult edge_edge(const Path& p0, const Path& p1, const Path& q0, const Path& q1, const QueryConfig& config) {
+    // F = (p0 - q0) + u (p1 - p0) + v (q0 - q1).
+    const Vec3 magnitude = largest_magnitude({&p0, &p1, &q0, &q1});
+    return solve(make_function(p0, q0, p1, p0, q0, q1, k_error_scale, magnitude), false, config);
+}
+
+}  // namespace collidescope::ccd

@@ -1,0 +1,90 @@
+// A pair over an interval: the exact test at t = 0; then each vertex of one triangle against
+// the other's face and each edge against each edge, every query first through the box of its
+// points at both ends (the motion is linear, so the features stay in the convex hull of
+// their positions at both ends: boxes apart, no contact), and each asked only for contacts
+// before the earliest found so far.
+
+#include "ccd/pair_motion.hpp"
+
+#include "collidescope/geometry.hpp"
+
+#include <algorithm>
+
+namespace collidescope::ccd {
+namespace {
+
+struct Bounds {
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+    Vec3 hi = Vec3::Constant(-std::numeric_limits<double>::infinity());
+    void grow(const Path& path) {
+        lo = lo.cwiseMin(path[0]).cwiseMin(path[1]);
+        hi = hi.cwiseMax(path[0]).cwiseMax(path[1]);
+    }
+    bool overlaps(const Bounds& o) const { return (lo.array() <= o.hi.array()).all() && (o.lo.array() <= hi.array()).all(); }
+};
+
+bool touching(const PairMotion& m, int end) {
+    const std::array<Vec3, 3> a{m.a[0][end], m.a[1][end], m.a[2][end]};
+    const std::array<Vec3, 3> b{m.b[0][end], m.b[1][end], m.b[2][end]};
+    if (m.self) return self_triangles_collide(m.ia, a, m.ib, b);
+    return triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2]);
+}
+
+bool shares(const TriIndices& t, std::uint32_t v) { return t[0] == v || t[1] == v || t[2] == v; }
+
+}  // namespace
+
+PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_boxes) {
+    PairOutcome out;
+    if (m.self && std::is_permutation(m.ia.begin(), m.ia.end(), m.ib.begin())) return out;  // the same triangle
+    if (touching(m, 0)) {
+        out.contact = out.start_contact = true;
+        out.toi = 0;
+        out.end_contact = touching(m, 1);
+        return out;
+    }
+    Bounds face_a, face_b;
+    std::array<Bounds, 3> point_a, point_b;
+    for (int i = 0; i < 3; ++i) {
+        face_a.grow(m.a[i]);
+        face_b.grow(m.b[i]);
+        point_a[i].grow(m.a[i]);
+        point_b[i].grow(m.b[i]);
+    }
+    QueryConfig config{tolerance, 1, max_boxes};
+    const auto record = [&](const QueryResult& r) {
+        ++out.queries;
+        out.boxes += r.boxes;
+        if (!r.hit) return;
+        if (!out.contact || r.toi < out.toi) out.toi = r.toi;
+        out.contact = true;
+        out.resolved = out.resolved && r.resolved;
+        config.t_max = out.toi;  // only an earlier contact matters now
+    };
+    // Each vertex of one against the other's face (not a vertex of that face, for self).
+    for (int i = 0; i < 3; ++i) {
+        if (!(m.self && shares(m.ib, m.ia[i])) && point_a[i].overlaps(face_b)) {
+            record(vertex_face(m.a[i], m.b[0], m.b[1], m.b[2], config));
+        }
+        if (!(m.self && shares(m.ia, m.ib[i])) && point_b[i].overlaps(face_a)) {
+            record(vertex_face(m.b[i], m.a[0], m.a[1], m.a[2], config));
+        }
+    }
+    // Each edge against each edge (not sharing a vertex, for self).
+    for (int i = 0; i < 3; ++i) {
+        const int i1 = (i + 1) % 3;
+        Bounds edge_a = point_a[i];
+        edge_a.grow(m.a[i1]);
+        for (int j = 0; j < 3; ++j) {
+            const int j1 = (j + 1) % 3;
+            if (m.self && (m.ia[i] == m.ib[j] || m.ia[i] == m.ib[j1] || m.ia[i1] == m.ib[j] || m.ia[i1] == m.ib[j1])) continue;
+            Bounds edge_b = point_b[j];
+            edge_b.grow(m.b[j1]);
+            if (edge_a.overlaps(edge_b)) record(edge_edge(m.a[i], m.a[i1], m.b[j], m.b[j1], config));
+        }
+    }
+    if (out.contact) out.end_contact = touching(m, 1);
+    return out;
+}
+
+}  // namespace collidescope::ccd

@@ -1,0 +1,194 @@
+// Between-frames detection on whole frames: handcrafted pass-throughs, the self rule, bad
+// input, and BetweenFrames against between_frames_reference on random scenes (soups snapped to
+// a grid: exact touches, coplanar contact and motions along the grid; crumpled sheets with
+// self-contact) at 1, 2 and 4 threads, seeds printed.
+
+#include "support/scene_builders.hpp"
+
+#include "collidescope/between_frames.hpp"
+#include "collidescope/error.hpp"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cstdio>
+#include <map>
+
+namespace collidescope {
+namespace {
+
+using testing::grid_sheet;
+using testing::translated;
+
+// Two frames of the same meshes (positions from `from` and `to`).
+std::pair<Frame, Frame> interval(std::vector<MeshData> from, std::vector<MeshData> to) {
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < from.size(); ++i) names.push_back("object" + std::to_string(i));
+    auto source = make_memory_source(names, {std::move(from), std::move(to)});
+    return {source->frame(0), source->frame(1)};
+}
+
+MeshData one_triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
+    MeshData mesh;
+    mesh.vertices = {a, b, c};
+    mesh.triangles = {{0, 1, 2}};
+    return mesh;
+}
+
+TEST(BetweenFrames, ATriangleThatPassesThroughASheetBetweenTwoFramesIsAPassThrough) {
+    const MeshData sheet = grid_sheet(4, 4.0);  // z = 0, from (0, 0) to (4, 4)
+    const MeshData small = one_triangle({1.2, 1.3, 0}, {1.6, 1.3, 0}, {1.3, 1.7, 0});
+    const auto [from, to] = interval({sheet, translated(small, {0, 0, 1})}, {sheet, translated(small, {0, 0, -3})});
+    BetweenFrames detector;
+    const IntervalResult result = detector.detect(from, to);
+    ASSERT_FALSE(result.contacts.empty());
+    for (const IntervalContact& c : result.contacts) {
+        EXPECT_TRUE(c.pass_through);
+        EXPECT_LE(c.toi, 0.25);  // reaches z = 0 at t = 1/4
+        EXPECT_GE(c.toi, 0.25 - 1e-3);
+    }
+    EXPECT_EQ(result.stats.pass_throughs, result.contacts.size());
+    const IntervalResult reference = between_frames_reference(from, to, {});
+    ASSERT_EQ(reference.contacts.size(), result.contacts.size());
+    for (std::size_t i = 0; i < reference.contacts.size(); ++i) EXPECT_EQ(reference.contacts[i].pair, result.contacts[i].pair);
+}
+
+TEST(BetweenFrames, ContactAtAnEndIsNotAPassThroughAndAStillPairTouchingAtTheStartHasToiZero) {
+    const MeshData sheet = grid_sheet(2, 2.0);
+    const MeshData small = one_triangle({0.3, 0.3, 0}, {0.6, 0.3, 0}, {0.3, 0.6, 0});
+    {  // ends on the sheet
+        const auto [from, to] = interval({sheet, translated(small, {0, 0, 1})}, {sheet, small});
+        const IntervalResult r = BetweenFrames().detect(from, to);
+        ASSERT_FALSE(r.contacts.empty());
+        for (const IntervalContact& c : r.contacts) EXPECT_FALSE(c.pass_through);
+    }
+    {  // lies on it throughout
+        const auto [from, to] = interval({sheet, small}, {sheet, small});
+        const IntervalResult r = BetweenFrames().detect(from, to);
+        ASSERT_FALSE(r.contacts.empty());
+        for (const IntervalContact& c : r.contacts) {
+            EXPECT_EQ(c.toi, 0);
+            EXPECT_FALSE(c.pass_through);
+        }
+        EXPECT_EQ(r.stats.start_contacts, r.contacts.size());
+    }
+}
+
+TEST(BetweenFrames, AFoldThroughItselfBetweenFramesIsFoundWithSelfCollisionAndNeighboursAreNot) {
+    // A strip of two triangles sharing an edge: still, nothing (the self rule); one folded
+    // through the other between the frames, a pass-through of the pair.
+    MeshData strip;
+    strip.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    strip.triangles = {{0, 1, 2}, {1, 3, 2}};
+    MeshData folded = strip;
+    folded.vertices[3] = {-0.5, -0.5, -0.2};  // through triangle 0, below its plane
+    MeshData above = strip;
+    above.vertices[3] = {-0.5, -0.5, 0.3};
+    BetweenFramesOptions self;
+    self.self_collision = true;
+    {
+        const auto [from, to] = interval({strip}, {strip});
+        EXPECT_TRUE(BetweenFrames(self).detect(from, to).contacts.empty());
+    }
+    {
+        // Vertex 3 swings from (1, 1, 0) up over the shared edge and down through triangle 0.
+        const auto [from, to] = interval({above}, {folded});
+        const IntervalResult r = BetweenFrames(self).detect(from, to);
+        const IntervalResult reference = between_frames_reference(from, to, self);
+        ASSERT_EQ(r.contacts.size(), 1u);
+        ASSERT_EQ(reference.contacts.size(), 1u);
+        EXPECT_EQ(r.contacts[0].pair, reference.contacts[0].pair);
+        EXPECT_TRUE(r.contacts[0].pass_through);
+    }
+}
+
+TEST(BetweenFrames, BadIntervalsAreOneLineErrors) {
+    const MeshData sheet = grid_sheet(2, 1.0);
+    MeshData other = grid_sheet(3, 1.0);
+    {
+        const auto source_a = make_memory_source({"a"}, {{sheet}});
+        const auto source_b = make_memory_source({"a"}, {{other}});
+        const Frame from = source_a->frame(0), to = source_b->frame(0);
+        try {
+            BetweenFrames().detect(from, to);
+            FAIL() << "a topology change was accepted";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("object 0 changes its mesh"), std::string::npos) << e.what();
+        }
+    }
+    {
+        const auto source = make_memory_source({"a", "b"}, {{sheet, sheet}});
+        const auto single = make_memory_source({"a"}, {{sheet}});
+        EXPECT_THROW(BetweenFrames().detect(source->frame(0), single->frame(0)), InputError);
+    }
+}
+
+// Random scenes: the fast detector against the reference, interval by interval.
+struct Reported {
+    double toi;
+    bool pass_through;
+    bool resolved;
+};
+
+std::map<TrianglePair, Reported> by_pair(const IntervalResult& r) {
+    std::map<TrianglePair, Reported> out;
+    for (const IntervalContact& c : r.contacts) out[c.pair] = {c.toi, c.pass_through, c.resolved};
+    return out;
+}
+
+TEST(BetweenFrames, EqualsTheReferenceOnRandomScenesAtOneTwoAndFourThreads) {
+    int pass_throughs = 0, contacts = 0;
+    for (const std::uint64_t seed : {11u, 12u, 13u, 14u, 15u, 16u}) {
+        std::printf("[ seed     ] BetweenFrames random scene: seed %llu\n", static_cast<unsigned long long>(seed));
+        testing::RandomSceneConfig config;
+        config.objects = 3;
+        config.frames = 4;
+        config.max_triangles = 30;
+        config.sheet_cells = 4;
+        const Scene scene = testing::random_scene(seed, config);
+        const std::vector<Frame> frames = testing::all_frames(scene);
+        for (const bool self : {false, true}) {
+            BetweenFramesOptions options;
+            options.self_collision = self;
+            std::vector<IntervalResult> by_threads;
+            for (const int threads : {1, 2, 4}) {
+                const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+                BetweenFrames detector(options);
+                for (std::size_t f = 0; f + 1 < frames.size(); ++f) {
+                    IntervalResult r = detector.detect(frames[f], frames[f + 1]);
+                    if (threads == 1) by_threads.push_back(std::move(r));
+                    else EXPECT_EQ(r.contacts, by_threads[f].contacts) << "seed " << seed << " interval " << f << " threads " << threads;
+                }
+            }
+            for (std::size_t f = 0; f + 1 < frames.size(); ++f) {
+                const std::string what = "seed " + std::to_string(seed) + " interval " + std::to_string(f) + (self ? " self" : "");
+                const auto fast = by_pair(by_threads[f]);
+                // The reference at the same tolerance: the same pairs, the same pass-throughs.
+                const auto slow = by_pair(between_frames_reference(frames[f], frames[f + 1], options));
+                // No false negative: the reference at a far finer tolerance finds nothing the fast one misses.
+                BetweenFramesOptions fine = options;
+                fine.tolerance = 1e-12;
+                fine.max_boxes = 20000;
+                for (const auto& [pair, found] : by_pair(between_frames_reference(frames[f], frames[f + 1], fine))) {
+                    if (!found.resolved) continue;  // not proven within 1e-12: no claim
+                    EXPECT_TRUE(fast.count(pair)) << what << ": missed " << pair.obj_a << ":" << pair.tri_a << " " << pair.obj_b << ":" << pair.tri_b;
+                }
+                for (const auto& [pair, found] : fast) {
+                    const auto it = slow.find(pair);
+                    EXPECT_TRUE(it != slow.end()) << what << ": not in the reference " << pair.obj_a << ":" << pair.tri_a << " " << pair.obj_b << ":" << pair.tri_b;
+                    if (it == slow.end()) continue;
+                    EXPECT_EQ(found.pass_through, it->second.pass_through) << what;
+                    EXPECT_NEAR(found.toi, it->second.toi, 1e-3) << what;
+                    pass_throughs += found.pass_through;
+                    ++contacts;
+                }
+                EXPECT_EQ(fast.size(), slow.size()) << what;
+            }
+        }
+    }
+    std::printf("%d contacts, %d pass-throughs over the random intervals\n", contacts, pass_throughs);
+    EXPECT_GT(pass_throughs, 0);
+}
+
+}  // namespace
+}  // namespace collidescope
