@@ -1,6 +1,7 @@
 // `collidescope check`: runs a scene's frames through a method and reports the colliding
 // triangle pairs (summary on stderr, --pairs TSV, --stats JSON Lines, exit code).
 
+#include "check_between.hpp"
 #include "check_regions.hpp"
 #include "check_sinks.hpp"
 #include "commands.hpp"
@@ -34,6 +35,8 @@ struct CheckOptions {
     std::string regions;          ///< regions as JSON Lines ("" = none, "-" = stdout)
     bool exit_zero = false;
     bool quiet = false;
+    bool between_frames = false;  ///< continuous detection over each interval instead of frames
+    double ccd_tolerance = 0;     ///< --ccd-tolerance (0: automatic)
     EngineOptions engine;           ///< --method, --self, --threads, --gpu-*, --aabb-*
 };
 
@@ -50,6 +53,11 @@ Outputs (FILE may be - for stdout; logs and progress always go to stderr):
            "loops", "curve_length", "coplanar_area", "inside_area" ([a's inside b, b's inside a]),
            "depth" (null where not defined), "box", "predecessors", "curves": [{"closed",
            "length", "points"}]}; then a line per region on stderr (docs/explanation/regions.md).
+With --between-frames, each interval from frame k to k + 1 instead (vertices moving on straight
+  lines; same meshes at both ends): a pair is reported when its triangles touch at some time
+  in it, within --ccd-tolerance (docs/explanation/between-frames.md). --pairs adds two columns:
+  k objA triA objB triB toi pass, toi a lower bound of the first contact in [0, 1] and pass 1
+  when the pair is apart at both frames (a pass-through). --stats: one object per interval.
   A file output is written as FILE.partial, flushed after every frame, and renamed to FILE
   when the run completes: an interrupted run leaves only FILE.partial.
 SIGINT or SIGTERM stops after the current frame (a second one at once) and says how many
@@ -121,6 +129,11 @@ void log_region_lines(Progress& progress, const RegionsWriter& writer, bool quie
 }
 
 int run_check(const CheckOptions& options) {
+    if (options.between_frames) {
+        if (!options.regions.empty()) throw InputError("--regions and --between-frames: regions are found per frame; run them apart");
+        return run_check_between({options.inputs, options.scene, options.frames, options.pairs, options.stats,
+                                  options.ccd_tolerance, options.exit_zero, options.quiet, options.engine});
+    }
     if ((options.pairs == "-") + (options.stats == "-") + (options.regions == "-") > 1) {
         throw InputError("--pairs, --stats and --regions: only one of them can write to stdout (-)");
     }
@@ -216,6 +229,13 @@ Command add_check_command(CLI::App& app) {
     check->add_option("--regions", options->regions,
                       "Write the interpenetration regions (curves, ids over frames) as JSON Lines (- = stdout)")
         ->type_name("FILE");
+    check->add_flag("--between-frames", options->between_frames,
+                    "Continuous detection between consecutive frames (linear motion): pairs that touch at any "
+                    "time in an interval, pass-throughs included");
+    check->add_option("--ccd-tolerance", options->ccd_tolerance,
+                      "With --between-frames: a reported pair comes within this distance of touching (0: 1e-6 of "
+                      "each interval's extent)")
+        ->type_name("D");
     check->add_flag("--exit-zero", options->exit_zero, "Exit 0 even when collisions are found");
     check->add_flag("-q,--quiet", options->quiet, "Only the total line on stderr, no per-frame lines");
     add_engine_options(*check, options->engine);

@@ -29,8 +29,9 @@ struct BetweenFramesOptions {
     /// index are not queried, see between-frames.md).
     bool self_collision = false;
     /// Boxes one primitive query may refine before it stops and reports contact at the
-    /// earliest time it has not excluded (conservative; counted as unresolved).
-    std::uint32_t max_boxes = 200000;
+    /// earliest time it has not excluded (conservative; counted as unresolved). A query asked
+    /// after another of its pair found contact gets at most 4096.
+    std::uint32_t max_boxes = 50000;
 };
 
 /// One pair reported for an interval.
@@ -41,7 +42,9 @@ struct IntervalContact {
     double toi = 0;
     /// Apart at both ends of the interval: the contact a per-frame check cannot see.
     bool pass_through = false;
-    /// False when a query reached max_boxes before proving the tolerance (still reported).
+    /// False when a query spent its budget (max_boxes) before deciding: toi is then still a
+    /// lower bound of the first contact, but the pair is not proven within the tolerance at
+    /// toi (it is when another of its queries found contact). Still reported.
     bool resolved = true;
 
     friend bool operator==(const IntervalContact&, const IntervalContact&) = default;

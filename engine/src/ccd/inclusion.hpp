@@ -23,7 +23,7 @@ using Path = std::array<Vec3, 2>;
 struct QueryConfig {
     double tolerance = 1e-6;          ///< δ: accept a box whose values lie within δ of 0
     double t_max = 1;                 ///< times after this are of no interest (an earlier contact is known)
-    std::uint32_t max_boxes = 200000;  ///< then stop: conservatively a contact
+    std::uint32_t max_boxes = 50000;   ///< then stop: conservatively a contact
 };
 
 /// What a query found.

@@ -8,6 +8,8 @@
 
 #include "collidescope/geometry.hpp"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 
 namespace collidescope::ccd {
@@ -32,6 +34,39 @@ bool touching(const PairMotion& m, int end) {
 
 bool shares(const TriIndices& t, std::uint32_t v) { return t[0] == v || t[1] == v || t[2] == v; }
 
+// True when all twelve positions (both triangles at both ends) lie in one plane, decided
+// exactly: then every position in between does too (an affine combination of them), and two
+// triangles in a plane that first touch do so with a vertex of one on the other's border, so
+// the vertex-face queries find every first contact and the edge-edge ones (whose zero sets, for
+// nearly parallel edges in a plane, are long curves that cost the inclusion search dearly) are
+// not needed.
+bool coplanar_motion(const PairMotion& m) {
+    std::array<Vec3, 12> points;
+    for (int i = 0; i < 3; ++i) {
+        for (int end = 0; end < 2; ++end) {
+            points[i * 2 + end] = m.a[i][end];
+            points[6 + i * 2 + end] = m.b[i][end];
+        }
+    }
+    // A plane: the first point and two more that make a non-degenerate triangle with it.
+    for (int k = 0; k < 3; ++k) {  // the common case: one coordinate shared by every point
+        bool same = true;
+        for (const Vec3& p : points) same = same && p[k] == points[0][k];
+        if (same) return true;
+    }
+    for (int i = 1; i < 12; ++i) {
+        for (int j = i + 1; j < 12; ++j) {
+            const Vec3 normal = (points[i] - points[0]).cross(points[j] - points[0]);
+            if (!(normal.squaredNorm() > 0)) continue;
+            for (const Vec3& p : points) {
+                if (orient3d(points[0], points[i], points[j], p) != 0) return false;
+            }
+            return true;
+        }
+    }
+    return false;  // all on a line or a point: the general queries decide
+}
+
 }  // namespace
 
 PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_boxes) {
@@ -52,6 +87,10 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
         point_b[i].grow(m.b[i]);
     }
     QueryConfig config{tolerance, 1, max_boxes};
+    // Once a query has found contact, the others only ask whether there is an earlier one, on
+    // a smaller budget: spent, its earliest time not excluded becomes the pair's toi (still a
+    // lower bound; the pair is then marked unresolved).
+    constexpr std::uint32_t k_after_contact = 4096;
     const auto record = [&](const QueryResult& r) {
         ++out.queries;
         out.boxes += r.boxes;
@@ -60,6 +99,7 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
         out.contact = true;
         out.resolved = out.resolved && r.resolved;
         config.t_max = out.toi;  // only an earlier contact matters now
+        config.max_boxes = std::min(max_boxes, k_after_contact);
     };
     // Each vertex of one against the other's face (not a vertex of that face, for self).
     for (int i = 0; i < 3; ++i) {
@@ -71,7 +111,8 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
         }
     }
     // Each edge against each edge (not sharing a vertex, for self).
-    for (int i = 0; i < 3; ++i) {
+    const bool planar = coplanar_motion(m);
+    for (int i = 0; i < 3 && !planar; ++i) {
         const int i1 = (i + 1) % 3;
         Bounds edge_a = point_a[i];
         edge_a.grow(m.a[i1]);
