@@ -130,12 +130,17 @@ int run_check_between(const BetweenFramesRun& run) {
 
     Progress progress(range.end - range.begin - 1);
     Frame from = scene.source->frame(range.begin);
-    if (!run.quiet) {
+    // The scene line comes after the first interval, so that bad input there (a topology
+    // change, a coordinate that is not finite) is the only line printed.
+    bool announced = run.quiet;
+    const auto announce = [&] {
+        if (announced) return;
+        announced = true;
         progress.log("scene '" + scene.name + "': " + std::to_string(names.size()) + " objects, intervals between frames " +
                      std::to_string(range.begin) + ".." + std::to_string(range.end - 1) + " (" +
                      std::to_string(range.end - range.begin - 1) + "), linear motion, self-collision " +
                      (config.self_collision ? "on" : "off"));
-    }
+    };
     const InterruptGuard interrupt;
     Totals totals;
     std::uint32_t f = range.begin;
@@ -147,6 +152,7 @@ int run_check_between(const BetweenFramesRun& run) {
         } catch (const InputError& e) {
             throw InputError(located(label, names, e.what()));
         }
+        announce();
         totals.add(result);
         if (pairs_out) write_pairs(pairs_out->stream(), f, result);
         if (stats_out) write_stats(stats_out->stream(), f, result);

@@ -1,7 +1,7 @@
 #pragma once
 // The reference queries (engine/src/ccd, private): the same two questions as inclusion.hpp,
 // answered the slow, obvious way. Interval arithmetic in which every operation's result is
-// widened by one ulp on each side (a correctly rounded result is within half an ulp of the
+// widened by at least one ulp on each side (a correctly rounded result is within half an ulp of the
 // exact one, so the widened interval holds it), evaluated on the formula as written over a
 // box of (t, u, v); a box whose interval for some coordinate excludes 0 holds no contact.
 // Boxes are halved in all three parameters at once, earliest first; one is accepted when each
