@@ -16,7 +16,7 @@
 
 #include <tbb/global_control.h>
 
-#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <regex>

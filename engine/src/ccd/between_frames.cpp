@@ -8,17 +8,15 @@
 #include "collidescope/between_frames.hpp"
 
 #include "bvh/bvh.hpp"
-#include "ccd/pair_motion.hpp"
 #include "ccd/interval_checks.hpp"
+#include "ccd/pair_motion.hpp"
 #include "stats/stopwatch.hpp"
-
-#include "collidescope/error.hpp"
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <map>
+#include <span>
 
 namespace collidescope {
 namespace {
