@@ -40,11 +40,17 @@ std::string located(const std::string& scene, const std::vector<std::string>& na
     return scene + ": " + out + message.substr(at);
 }
 
+}  // namespace
+
+double printed_toi(double toi, double unit) { return std::max(0.0, toi - 0.6 * unit); }
+
+namespace {
+
 void write_pairs(std::ostream& out, std::uint32_t frame, const IntervalResult& result) {
     char line[160];
     for (const IntervalContact& c : result.contacts) {
-        std::snprintf(line, sizeof line, "%u\t%u\t%u\t%u\t%u\t%.9g\t%d\n", frame, c.pair.obj_a, c.pair.tri_a, c.pair.obj_b,
-                      c.pair.tri_b, c.toi, c.pass_through ? 1 : 0);
+        std::snprintf(line, sizeof line, "%u\t%u\t%u\t%u\t%u\t%.9f\t%d\n", frame, c.pair.obj_a, c.pair.tri_a, c.pair.obj_b,
+                      c.pair.tri_b, printed_toi(c.toi, 1e-9), c.pass_through ? 1 : 0);
         out << line;
     }
 }
@@ -164,7 +170,7 @@ int run_check_between(const BetweenFramesRun& run) {
             char line[200];
             std::snprintf(line, sizeof line, "frames %u-%u: %llu pairs, %llu pass-throughs, first contact at t = %.6f, %.3f ms", f, f + 1,
                           static_cast<unsigned long long>(result.stats.contacts),
-                          static_cast<unsigned long long>(result.stats.pass_throughs), earliest, result.stats.ms);
+                          static_cast<unsigned long long>(result.stats.pass_throughs), printed_toi(earliest, 1e-6), result.stats.ms);
             progress.log(line);
         }
         progress.advance();

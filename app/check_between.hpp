@@ -22,6 +22,10 @@ struct BetweenFramesRun {
     EngineOptions engine;
 };
 
+/// A toi as printed with `unit` (1e-9: nine decimals): rounded down, so the printed number is
+/// still a lower bound (printf rounds to nearest: less 0.6 units first, never below 0).
+double printed_toi(double toi, double unit);
+
 /// Runs it; returns the exit code (0 none, 1 contact in some interval).
 int run_check_between(const BetweenFramesRun& run);
 

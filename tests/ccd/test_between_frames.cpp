@@ -102,6 +102,38 @@ TEST(BetweenFrames, AFoldThroughItselfBetweenFramesIsFoundWithSelfCollisionAndNe
     }
 }
 
+// Two triangles of one object in one plane throughout, one folding over the other through what
+// they share (an edge; a vertex): contact starts at the shared vertex, where only an edge-edge
+// query between unshared features sees it (a review found the coplanar shortcut, which skips
+// edge-edge queries, dropping these).
+TEST(BetweenFrames, CoplanarFoldsThroughASharedVertexAreFound) {
+    BetweenFramesOptions self;
+    self.self_collision = true;
+    {
+        MeshData from;
+        from.vertices = {{0, 0, 0}, {1, 0, 0}, {2, 1, 0}, {0.5, -1, 0}};
+        from.triangles = {{0, 1, 2}, {0, 1, 3}};
+        MeshData to = from;
+        to.vertices[2] = {2, -1, 0};
+        const auto [a, b] = interval({from}, {to});
+        const IntervalResult r = BetweenFrames(self).detect(a, b);
+        ASSERT_EQ(r.contacts.size(), 1u);
+        EXPECT_FALSE(r.contacts[0].pass_through);  // overlapping at the end
+        EXPECT_EQ(r.contacts[0].pair, between_frames_reference(a, b, self).contacts.at(0).pair);
+    }
+    {
+        MeshData from;
+        from.vertices = {{0, 0, 0}, {-1, 0, 0}, {1, 1, 0}, {-0.5, -1, 0}, {0.5, -1, 0}};
+        from.triangles = {{0, 1, 2}, {0, 3, 4}};
+        MeshData to = from;
+        to.vertices[2] = {1, -1, 0};
+        const auto [a, b] = interval({from}, {to});
+        const IntervalResult r = BetweenFrames(self).detect(a, b);
+        ASSERT_EQ(r.contacts.size(), 1u);
+        EXPECT_EQ(r.contacts[0].pair, between_frames_reference(a, b, self).contacts.at(0).pair);
+    }
+}
+
 TEST(BetweenFrames, BadIntervalsAreOneLineErrors) {
     const MeshData sheet = grid_sheet(2, 1.0);
     MeshData other = grid_sheet(3, 1.0);

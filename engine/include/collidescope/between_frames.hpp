@@ -30,7 +30,7 @@ struct BetweenFramesOptions {
     bool self_collision = false;
     /// Boxes one primitive query may refine before it stops and reports contact at the
     /// earliest time it has not excluded (conservative; counted as unresolved). A query asked
-    /// after another of its pair found contact gets at most 4096.
+    /// after another of its pair found contact gets at most 4096. At least 1.
     std::uint32_t max_boxes = 50000;
 };
 
@@ -44,7 +44,8 @@ struct IntervalContact {
     bool pass_through = false;
     /// False when a query spent its budget (max_boxes) before deciding: toi is then still a
     /// lower bound of the first contact, but the pair is not proven within the tolerance at
-    /// toi (it is when another of its queries found contact). Still reported.
+    /// toi (if another of its queries found contact, the pair is proven within it at some
+    /// later time). Still reported.
     bool resolved = true;
 
     friend bool operator==(const IntervalContact&, const IntervalContact&) = default;
@@ -82,7 +83,8 @@ public:
     BetweenFrames& operator=(const BetweenFrames&) = delete;
 
     /// The interval from `from` to `to`. Throws InputError when the two frames' objects differ
-    /// in number or topology, or a coordinate is not finite (naming the object and frame).
+    /// in number or topology, or a coordinate is not finite or above 1e100 (naming the object
+    /// and frame).
     IntervalResult detect(const Frame& from, const Frame& to);
 
 private:

@@ -145,7 +145,9 @@ struct BetweenFrames::State {
     std::vector<SweptTree> trees;
 };
 
-BetweenFrames::BetweenFrames(BetweenFramesOptions options) : m_options(options), m_state(std::make_unique<State>()) {}
+BetweenFrames::BetweenFrames(BetweenFramesOptions options) : m_options(options), m_state(std::make_unique<State>()) {
+    m_options.max_boxes = std::max<std::uint32_t>(m_options.max_boxes, 1);
+}
 BetweenFrames::~BetweenFrames() = default;
 
 IntervalResult BetweenFrames::detect(const Frame& from, const Frame& to) {

@@ -62,7 +62,7 @@ Function make_function(const Path& x_from, const Path& x_to, const Path& y_from,
     if (largest > 0 && std::isfinite(largest)) {
         f.normal = normal / largest;
         // n . F from the axes' values (each within error_k): sum |n_k| error_k, plus the dot
-        // product's own rounding, less than that again (|F_k| <= 18 M_k, error_k = 512 M_k u).
+        // product's own rounding, far less than that again (|F_k| <= 6 M_k, error_k = 512 M_k u).
         f.normal_error = 2 * f.normal.cwiseAbs().dot(f.error);
     }
     return f;
@@ -166,24 +166,27 @@ QueryResult solve(const Function& f, bool simplex, const QueryConfig& config) {
             }
         }
         int d = static_cast<int>(std::max_element(change.begin(), change.end()) - change.begin());
-        const std::array<double, 3> width{box.t1 - box.t0, box.u1 - box.u0, box.v1 - box.v0};
-        // Nothing left to halve (values flat to within the rounding bound, wider than δ):
-        // a contact at this box's time, not proven within δ.
-        constexpr double k_smallest = 0x1p-60;
-        if (width[d] < k_smallest) {
-            d = width[0] >= k_smallest ? 0 : width[1] >= k_smallest ? 1 : width[2] >= k_smallest ? 2 : -1;
-            if (d < 0) {
-                result.hit = true;
-                result.toi = box.t0;
-                result.resolved = false;
-                return result;
-            }
+        // Halve it where the midpoint lies strictly inside (near 1 a width of about 2^-53
+        // cannot be halved in double); along no parameter (values flat to within the rounding
+        // bound, wider than δ): a contact at this box's time, not proven within δ.
+        const std::array<std::array<double, 2>, 3> range{{{box.t0, box.t1}, {box.u0, box.u1}, {box.v0, box.v1}}};
+        const auto splits = [&](int k) {
+            const double middle = 0.5 * (range[k][0] + range[k][1]);
+            return range[k][0] < middle && middle < range[k][1];
+        };
+        if (!splits(d)) d = splits(0) ? 0 : splits(1) ? 1 : splits(2) ? 2 : -1;
+        if (d < 0) {
+            result.hit = true;
+            result.toi = box.t0;
+            result.resolved = false;
+            return result;
         }
         Box low = box, high = box;
         low.level = high.level = box.level + 1;
-        if (d == 0) low.t1 = high.t0 = 0.5 * (box.t0 + box.t1);
-        if (d == 1) low.u1 = high.u0 = 0.5 * (box.u0 + box.u1);
-        if (d == 2) low.v1 = high.v0 = 0.5 * (box.v0 + box.v1);
+        const double middle = 0.5 * (range[d][0] + range[d][1]);
+        if (d == 0) low.t1 = high.t0 = middle;
+        if (d == 1) low.u1 = high.u0 = middle;
+        if (d == 2) low.v1 = high.v0 = middle;
         heap.push_back(low);
         std::push_heap(heap.begin(), heap.end(), later);
         heap.push_back(high);

@@ -19,6 +19,11 @@ void check_finite(const Frame& frame) {
                 throw InputError("frame " + std::to_string(frame.index) + ", object " + std::to_string(i) + ": vertex " +
                                  std::to_string(v) + " is not finite (between-frames detection needs finite coordinates)");
             }
+            // Products of three coordinate differences must not overflow (the filters' bounds).
+            if (vertices[v].cwiseAbs().maxCoeff() > 1e100) {
+                throw InputError("frame " + std::to_string(frame.index) + ", object " + std::to_string(i) + ": vertex " +
+                                 std::to_string(v) + " has a coordinate above 1e100 (between-frames detection's limit)");
+            }
         }
     }
 }

@@ -7,7 +7,8 @@
 namespace collidescope::ccd {
 
 /// Throws InputError unless `to` has `from`'s objects with the same triangles and every
-/// coordinate of both is finite; the message names the frame, the object and the vertex.
+/// coordinate of both is finite and at most 1e100 in size; the message names the frame, the
+/// object and the vertex.
 void check_interval(const Frame& from, const Frame& to);
 
 /// `requested` when positive, else 1e-6 times the largest extent of the box of both frames'

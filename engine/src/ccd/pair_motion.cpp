@@ -8,8 +8,6 @@
 
 #include "collidescope/geometry.hpp"
 
-#include <Eigen/Geometry>
-
 #include <algorithm>
 
 namespace collidescope::ccd {
@@ -39,7 +37,9 @@ bool shares(const TriIndices& t, std::uint32_t v) { return t[0] == v || t[1] == 
 // triangles in a plane that first touch do so with a vertex of one on the other's border, so
 // the vertex-face queries find every first contact and the edge-edge ones (whose zero sets, for
 // nearly parallel edges in a plane, are long curves that cost the inclusion search dearly) are
-// not needed.
+// not needed. Not for two triangles of one object sharing a vertex: the self rule skips the
+// queries of shared vertices, and such a pair can start to overlap at a shared vertex (one
+// triangle folding through it) where only an edge-edge query sees it.
 bool coplanar_motion(const PairMotion& m) {
     std::array<Vec3, 12> points;
     for (int i = 0; i < 3; ++i) {
@@ -56,8 +56,10 @@ bool coplanar_motion(const PairMotion& m) {
     }
     for (int i = 1; i < 12; ++i) {
         for (int j = i + 1; j < 12; ++j) {
-            const Vec3 normal = (points[i] - points[0]).cross(points[j] - points[0]);
-            if (!(normal.squaredNorm() > 0)) continue;
+            // Not on one line, decided exactly: a non-zero orientation in some projection.
+            bool triangle = false;
+            for (int drop = 0; drop < 3 && !triangle; ++drop) triangle = orient2d(points[0], points[i], points[j], drop) != 0;
+            if (!triangle) continue;
             for (const Vec3& p : points) {
                 if (orient3d(points[0], points[i], points[j], p) != 0) return false;
             }
@@ -111,7 +113,8 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
         }
     }
     // Each edge against each edge (not sharing a vertex, for self).
-    const bool planar = coplanar_motion(m);
+    const bool shared = m.self && (shares(m.ib, m.ia[0]) || shares(m.ib, m.ia[1]) || shares(m.ib, m.ia[2]));
+    const bool planar = !shared && coplanar_motion(m);
     for (int i = 0; i < 3 && !planar; ++i) {
         const int i1 = (i + 1) % 3;
         Bounds edge_a = point_a[i];
