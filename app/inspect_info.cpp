@@ -110,6 +110,47 @@ nlohmann::ordered_json region_summary(const recorder::Recording& rec, const std:
     return out;
 }
 
+// /intervals (record --between-frames): the intervals' totals, the one with the most
+// pass-throughs, and the first pass-through of the run (its interval, pair and time).
+nlohmann::ordered_json interval_summary(const recorder::Recording& rec) {
+    std::uint64_t intervals = 0, with_contact = 0, pairs = 0, pass_throughs = 0, unresolved = 0, most = 0, most_row = 0,
+                  first_row = 0;
+    double ms = 0, tolerance_min = 0, tolerance_max = 0;
+    for (std::uint64_t r = 1; r < rec.frames_complete(); ++r) {
+        const IntervalStats s = rec.interval(r, false).stats;
+        tolerance_min = intervals == 0 ? s.tolerance : std::min(tolerance_min, s.tolerance);
+        tolerance_max = intervals == 0 ? s.tolerance : std::max(tolerance_max, s.tolerance);
+        ++intervals;
+        with_contact += s.contacts > 0 ? 1 : 0;
+        pairs += s.contacts, pass_throughs += s.pass_throughs, unresolved += s.unresolved, ms += s.ms;
+        if (s.pass_throughs > most) most = s.pass_throughs, most_row = r;
+        if (first_row == 0 && s.pass_throughs > 0) first_row = r;
+    }
+    nlohmann::ordered_json out{{"intervals", intervals},         {"with_contact", with_contact},
+                               {"pairs", pairs},                 {"pass_throughs", pass_throughs},
+                               {"unresolved", unresolved},       {"total_ms", ms},
+                               {"tolerance_min", tolerance_min}, {"tolerance_max", tolerance_max}};
+    const auto frames_of = [&](std::uint64_t row) {
+        const recorder::RecordedInterval i = rec.interval(row, false);
+        return nlohmann::ordered_json::array({i.from_frame, i.to_frame});
+    };
+    out["most_pass_throughs"] = most;
+    out["most_pass_throughs_frames"] = most > 0 ? frames_of(most_row) : nlohmann::ordered_json();
+    // The run's first pass-through: the earliest of the first interval that has any.
+    out["first_pass_through"] = nlohmann::ordered_json();
+    if (first_row > 0) {
+        const recorder::RecordedInterval i = rec.interval(first_row);
+        const IntervalContact* first = nullptr;
+        for (const IntervalContact& c : i.contacts) {
+            if (c.pass_through && (first == nullptr || c.toi < first->toi)) first = &c;
+        }
+        out["first_pass_through"] = {{"frames", {i.from_frame, i.to_frame}},
+                                     {"pair", {first->pair.obj_a, first->pair.tri_a, first->pair.obj_b, first->pair.tri_b}},
+                                     {"toi", first->toi}};
+    }
+    return out;
+}
+
 }  // namespace
 
 nlohmann::ordered_json inspect_info(const recorder::Recording& rec) {
@@ -160,6 +201,7 @@ nlohmann::ordered_json inspect_info(const recorder::Recording& rec) {
     out["pairs"] = {{"total", total}, {"frames_with_collisions", colliding_frames}, {"max_per_frame", max_pairs},
                     {"max_frame", max_frame}};
     if (rec.has_regions()) out["regions"] = region_summary(rec, indices);
+    if (rec.has_intervals()) out["between_frames"] = interval_summary(rec);
     nlohmann::ordered_json stages = nlohmann::ordered_json::object();
     for (const recorder::Series<double>& s : rec.stage_ms()) {
         double sum = 0;

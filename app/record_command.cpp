@@ -36,6 +36,8 @@ struct RecordOptions {
     std::string join = "virtual";   ///< under mpirun: how the ranks' parts are joined (ranks.hpp)
     bool quiet = false;
     bool regions = false;           ///< --regions: /regions per frame (schema 1.5)
+    bool between_frames = false;    ///< --between-frames: /intervals (schema 1.7)
+    double ccd_tolerance = 0;       ///< --ccd-tolerance (0: automatic)
     EngineOptions engine;           ///< --method, --self, --threads, --gpu-*, --aabb-*
 };
 
@@ -90,6 +92,8 @@ recorder::SessionInfo session_info(const Scene& scene, const RecordOptions& opti
     info.clip = scene.clip;
     info.up_axis = scene.up_axis;
     info.regions = options.regions;
+    info.between_frames = options.between_frames;
+    info.ccd_tolerance = options.ccd_tolerance;
     return info;
 }
 
@@ -130,6 +134,10 @@ int run_record(const RecordOptions& options) {
     const std::uint32_t depth_every = parse_depth(options.depth);
     if (options.regions && ranks::parallel()) {
         throw InputError("--regions follows regions from frame to frame, so it records in one process: run it without mpirun");
+    }
+    if (options.between_frames && ranks::parallel()) {
+        throw InputError("--between-frames tests each frame with the one before it, so it records in one process: run it "
+                         "without mpirun");
     }
     const std::uint64_t budget = options.budget.empty() ? 0 : parse_size(options.budget, "--budget");
     const Scene scene = open_scene(options.inputs, options.scene, options.engine.animation);
@@ -214,6 +222,15 @@ Command add_record_command(CLI::App& app) {
         ->capture_default_str();
     record->add_flag("--regions", options->regions,
                      "Record each frame's interpenetration regions and their curves (/regions; docs/explanation/regions.md)");
+    record->add_flag("--between-frames", options->between_frames,
+                     "Also test each frame with the one before it, vertices moving linearly between them, and record "
+                     "each interval's pairs, times of contact and pass-throughs (/intervals; "
+                     "docs/explanation/between-frames.md)");
+    record->add_option("--ccd-tolerance", options->ccd_tolerance,
+                       "With --between-frames: the tolerance delta of the times of contact, in scene units (0: 1e-6 of "
+                       "each interval's extent)")
+        ->check(non_negative_number("(a distance in scene units; 0: automatic)"))
+        ->type_name("D");
     record->add_flag("-q,--quiet", options->quiet, "Only the final line on stderr");
     return {record, [options] { return run_record(*options); }};
 }

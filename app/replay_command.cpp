@@ -37,6 +37,7 @@ struct ReplayCliOptions {
     std::string contact_sheet;
     replays::SheetSelection sheet_frames = replays::SheetSelection::Every;
     int sheet_count = 12;
+    bool contact_moments = false;
     bool diff = false;
     bool quiet = false;
 };
@@ -52,7 +53,10 @@ recording lacks is said on the image and on stderr. Same recording and options: 
 --diff A.h5 B.h5 writes DIR/diff_NNNN.png: the frames both hold, A left and B right, the pairs
 only one of them found in green. --video FILE.mp4|FILE.gif encodes the frames as one clip
 (H.264 MP4 or animated GIF, through FFmpeg's libraries), with or without -o DIR; a failed
-clip leaves no file. See docs/how-to/replay.md.
+clip leaves no file. --contact-moments (a recording made with record --between-frames) also
+writes DIR/contact_NNNN.png for each interval from frame NNNN in which something passed through
+(apart at both frames): the meshes at the first pass-through's time of contact, its pair red and
+ringed; the timeline marks every such interval. See docs/how-to/replay.md.
 SIGINT or SIGTERM stops after the frames being rendered: every PNG written is complete.
 Under mpirun (docs/how-to/mpi.md) each rank renders one block of the frames into DIR, the same files
 a serial replay writes; with --video (which then needs -o DIR) rank 0 encodes the clip from
@@ -95,6 +99,7 @@ replays::ReplayOptions replay_options(const ReplayCliOptions& cli) {
     options.contact_sheet = cli.contact_sheet;
     options.sheet_selection = cli.sheet_frames;
     options.sheet_count = cli.sheet_count;
+    options.contact_moments = cli.contact_moments;
     return options;
 }
 
@@ -254,6 +259,14 @@ void print_replay_summary(const ReplayCliOptions& cli, const replays::ReplayOpti
                     static_cast<unsigned long long>(summary.frames), summary.video_fps, summary.video_seconds);
     }
     if (!summary.contact_sheet.empty()) std::printf("contact sheet: %s\n", summary.contact_sheet.c_str());
+    if (options.contact_moments) {
+        if (summary.moment_files.empty()) {
+            std::printf("moments of contact: none (no pass-through between the replayed frames)\n");
+        } else {
+            std::printf("moments of contact: %zu (%s .. %s)\n", summary.moment_files.size(),
+                        summary.moment_files.front().filename().c_str(), summary.moment_files.back().filename().c_str());
+        }
+    }
 }
 
 int run_replay(const ReplayCliOptions& cli) {
@@ -319,6 +332,9 @@ Command add_replay_command(CLI::App& app) {
     replay->add_option("--sheet-count", options->sheet_count, "Frames on the contact sheet, at most")
         ->check(whole_number(1, 10000, "of frames"))
         ->capture_default_str();
+    replay->add_flag("--contact-moments", options->contact_moments,
+                     "Also write DIR/contact_NNNN.png for each interval from frame NNNN with a pass-through (record "
+                     "--between-frames): the meshes at the first pass-through's time of contact, its pair ringed");
     replay->add_flag("--diff", options->diff, "Compare two recordings side by side, differing pairs highlighted");
     replay->add_flag("-q,--quiet", options->quiet, "No rate line on stderr");
     return {replay, [options] { return run_replay(*options); }};

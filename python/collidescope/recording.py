@@ -14,7 +14,18 @@ SCHEMA = "collidescope-trace"
 MAJOR = 1
 METHOD_GROUPS = ("gpu", "aabb", "decision", "hybrid")
 CSR_OFFSETS = ("collisions/offsets", "gpu/pass_offsets", "gpu/survivor_offsets", "gpu/depth/image_offsets",
-               "regions/offsets")
+               "regions/offsets", "intervals/offsets")
+# Per-frame datasets of /intervals (schema 1.7): one row per frame, row r the interval into frame r.
+INTERVAL_ROWS = ("intervals/counts", "intervals/ms", "intervals/tolerance")
+INTERVAL_COUNTS = ("candidate_pairs", "start_contacts", "primitive_queries", "inclusion_boxes", "contacts",
+                   "pass_throughs", "unresolved")
+# One row of Recording.intervals() (record --between-frames, schema 1.7).
+INTERVAL_DTYPE = np.dtype([("from_frame", np.int64), ("to_frame", np.int64), ("tolerance", np.float64)] +
+                          [(name, np.uint64) for name in INTERVAL_COUNTS] +
+                          [("broad_ms", np.float64), ("narrow_ms", np.float64), ("total_ms", np.float64)])
+# One row of Recording.interval_contacts(frame).
+CONTACT_DTYPE = np.dtype([("obj_a", np.uint32), ("tri_a", np.uint32), ("obj_b", np.uint32), ("tri_b", np.uint32),
+                          ("toi", np.float64), ("pass_through", np.bool_), ("resolved", np.bool_)])
 
 # One row of Recording.regions(frame) (/regions/table, /regions/measures and, from schema 1.6, /regions/penetration; the
 # inside areas and the depth from 1.6, NaN where not defined and in older recordings).
@@ -286,6 +297,58 @@ class Recording:
         a, b = (int(v) for v in self._file["regions/offsets"][row:row + 2])
         return a, b
 
+    # -- between the frames (record --between-frames, schema 1.7) -----------------------------
+
+    @property
+    def has_intervals(self):
+        """True when the recording holds /intervals (made with `record --between-frames`)."""
+        return "intervals/offsets" in self._file
+
+    def intervals(self):
+        """Every interval between consecutive recorded frames as a numpy record array
+        (INTERVAL_DTYPE): from_frame, to_frame, tolerance (the δ its times of contact are within),
+        the counts of `check --between-frames --stats` (candidate_pairs, start_contacts,
+        primitive_queries, inclusion_boxes, contacts, pass_throughs, unresolved) and broad_ms,
+        narrow_ms, total_ms. Raises ValueError without /intervals."""
+        self._need_intervals()
+        n = max(0, len(self) - 1)
+        i = self._file["intervals"]
+        out = np.zeros(n, dtype=INTERVAL_DTYPE)
+        out["from_frame"], out["to_frame"] = self._frames[:n], self._frames[1:n + 1]
+        out["tolerance"] = i["tolerance"][1:n + 1]
+        counts, ms = i["counts"][1:n + 1], i["ms"][1:n + 1]
+        for k, name in enumerate(INTERVAL_COUNTS):
+            out[name] = counts[:, k]
+        out["broad_ms"], out["narrow_ms"], out["total_ms"] = ms[:, 0], ms[:, 1], ms[:, 2]
+        return out.view(np.recarray)
+
+    def interval_contacts(self, frame):
+        """The pairs that touch between FRAME and the next recorded frame, as a numpy record
+        array (CONTACT_DTYPE), sorted by pair: obj_a, tri_a, obj_b, tri_b, toi (a lower bound of
+        the first time of contact, 0 at FRAME, 1 at the next), pass_through (apart at both
+        frames), resolved (False: a query spent its budget; toi is still a lower bound). Raises
+        IndexError when FRAME is not recorded or is the last one, ValueError without
+        /intervals."""
+        self._need_intervals()
+        row = self._row(frame) + 1
+        if row >= len(self):
+            raise IndexError("%s: frame %d is the last recorded frame; no interval starts there" % (self.path, frame))
+        i = self._file["intervals"]
+        a, b = (int(v) for v in i["offsets"][row:row + 2])
+        out = np.zeros(b - a, dtype=CONTACT_DTYPE)
+        pairs = i["pairs"][a:b]
+        for k, name in enumerate(("obj_a", "tri_a", "obj_b", "tri_b")):
+            out[name] = pairs[:, k]
+        out["toi"] = i["toi"][a:b]
+        flags = i["flags"][a:b]
+        out["pass_through"] = (flags & 1) != 0
+        out["resolved"] = (flags & 2) == 0
+        return out.view(np.recarray)
+
+    def _need_intervals(self):
+        if not self.has_intervals:
+            raise ValueError("%s: no intervals recorded (record with --between-frames)" % self.path)
+
     # -- per-frame stats -------------------------------------------------------------------
 
     @property
@@ -316,6 +379,7 @@ class Recording:
             if group in f:
                 names += [group + "/" + member for member in f[group]]
         names += [o for o in CSR_OFFSETS if o in f]
+        names += [d for d in INTERVAL_ROWS if d in f]
         names += ["objects/%d/vertex_offsets" % k for k in range(len(self.objects))]
         return names
 

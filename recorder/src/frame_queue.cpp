@@ -11,7 +11,8 @@ std::size_t FrameRecord::bytes() const {
                         pairs.size() * sizeof(TrianglePair) + (gpu.size() + aabb.size()) * sizeof(double) +
                         gpu_passes.size() * sizeof(std::uint64_t) +
                         (decision.size() + hybrid.size()) * sizeof(double) +
-                        survivors.size() * sizeof(survivors[0]) + regions.bytes();
+                        survivors.size() * sizeof(survivors[0]) + regions.bytes() +
+                        interval.bytes();
     for (const GpuDepthImage& image : depth_images) total += sizeof(GpuDepthImage) + image.depth.size() * sizeof(float);
     for (const ObjectRecord& object : objects) {
         total += sizeof(ObjectRecord) + object.positions.size() * sizeof(float);

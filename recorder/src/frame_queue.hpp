@@ -11,6 +11,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -45,6 +46,17 @@ struct RegionsRecord {
     }
 };
 
+/// The interval that ends at a frame (record --between-frames), as /intervals stores it.
+struct IntervalRecord {
+    std::uint64_t counts[7] = {};   ///< schema::k_interval_counts order
+    double ms[3] = {};              ///< broad, narrow, total
+    double tolerance = std::numeric_limits<double>::quiet_NaN();  ///< NaN: no interval (the first frame)
+    std::vector<TrianglePair> pairs;
+    std::vector<double> toi;
+    std::vector<std::uint8_t> flags;
+    std::size_t bytes() const { return pairs.size() * sizeof(TrianglePair) + toi.size() * 8 + flags.size(); }
+};
+
 /// One frame, owned.
 struct FrameRecord {
     std::uint32_t frame = 0;              ///< scene frame number
@@ -65,6 +77,7 @@ struct FrameRecord {
     LargeVector<std::array<std::uint32_t, 2>> survivors;  ///< GpuFrameInfo::survivors
     std::vector<GpuDepthImage> depth_images;              ///< GpuFrameInfo::depth_images
     RegionsRecord regions;                                ///< record --regions only
+    IntervalRecord interval;                              ///< record --between-frames only
 
     /// Bytes held (what the queue's cap counts).
     std::size_t bytes() const;

@@ -273,6 +273,11 @@ Part open_part(const std::filesystem::path& path, bool allow_incomplete) {
             part.where.fail("holds /regions (record --regions), whose ids follow regions across frames; join does not "
                             "merge them: record regions in one process");
         }
+        if (recording.has_intervals()) {
+            // A part's first row ends no interval: the one between two parts was never detected.
+            part.where.fail("holds /intervals (record --between-frames); each part lacks the interval into its first frame, "
+                            "so join does not merge them: record between frames in one process");
+        }
         const std::vector<std::uint32_t> frames = recording.frame_indices();
         if (!frames.empty()) {
             part.first = frames.front();

@@ -104,8 +104,13 @@ void RecordingState::count_frames() {
         for (const std::string& member : group_members(group)) n = std::min(n, rows(std::string(group) + "/" + member));
     }
     for (const char* offsets : {schema::k_gpu_pass_offsets, schema::k_gpu_survivor_offsets, schema::k_depth_image_offsets,
-                                schema::k_region_offsets}) {
+                                schema::k_region_offsets, schema::k_interval_offsets}) {
         if (h5::exists(file.get(), offsets)) n = std::min(n, offset_frames(offsets));
+    }
+    if (h5::exists(file.get(), schema::k_interval_offsets)) {  // 1.7: one row per frame
+        for (const char* path : {schema::k_interval_counts, schema::k_interval_ms, schema::k_interval_tolerance}) {
+            n = std::min(n, rows(path));
+        }
     }
     const std::vector<std::string> objects_listed = group_members(schema::k_objects);
     for (std::uint32_t k = 0; k < objects_listed.size(); ++k) {

@@ -7,13 +7,17 @@
 #include "frame_queue.hpp"
 #include "recording_writer.hpp"
 
+#include "collidescope/between_frames.hpp"
 #include "collidescope/error.hpp"
 #include "collidescope/pipeline.hpp"
+#include "collidescope/recorder/schema.hpp"
 #include "collidescope/regions.hpp"
 
 #include <algorithm>
 #include <exception>
 #include <mutex>
+#include <optional>
+#include <regex>
 #include <thread>
 
 #include <sys/resource.h>
@@ -61,6 +65,50 @@ RegionsRecord flatten(const std::vector<Region>& regions) {
     return out;
 }
 
+// The interval's contacts and counts, as /intervals stores them.
+IntervalRecord flatten(const IntervalResult& result) {
+    IntervalRecord out;
+    const IntervalStats& s = result.stats;
+    const std::uint64_t counts[7] = {s.candidate_pairs, s.start_contacts, s.primitive_queries, s.inclusion_boxes,
+                                     s.contacts,        s.pass_throughs,  s.unresolved};
+    std::copy(std::begin(counts), std::end(counts), out.counts);
+    out.ms[0] = s.broad_ms, out.ms[1] = s.narrow_ms, out.ms[2] = s.ms;
+    out.tolerance = s.tolerance;
+    for (const IntervalContact& c : result.contacts) {
+        out.pairs.push_back(c.pair);
+        out.toi.push_back(c.toi);
+        out.flags.push_back(static_cast<std::uint8_t>((c.pass_through ? schema::k_flag_pass_through : 0) |
+                                                      (c.resolved ? 0 : schema::k_flag_unresolved)));
+    }
+    return out;
+}
+
+// A frame whose vertices the recorder owns: the engine's frame may view memory that is only
+// valid during its Pipeline::process, and the next interval needs it after.
+Frame owned_copy(const Frame& frame) {
+    Frame out;
+    out.index = frame.index;
+    for (const ObjectFrame& object : frame.objects) {
+        out.objects.push_back({object.topology, std::vector<Vec3>(object.vertices.begin(), object.vertices.end())});
+    }
+    return out;
+}
+
+// The engine's message ("object 1 changes its mesh between frames 3 and 4") with the scene
+// named and each "object N" given its name.
+std::string located(const SessionInfo& session, const std::string& message) {
+    std::string out = "scene '" + session.scene + "': ";
+    const std::regex object(R"(object (\d+))");
+    std::size_t at = 0;
+    for (auto it = std::sregex_iterator(message.begin(), message.end(), object); it != std::sregex_iterator(); ++it) {
+        const std::size_t index = std::stoul((*it)[1]);
+        out += message.substr(at, static_cast<std::size_t>(it->position()) - at) + it->str();
+        if (index < session.object_names.size()) out += " ('" + session.object_names[index] + "')";
+        at = static_cast<std::size_t>(it->position() + it->length());
+    }
+    return out + message.substr(at);
+}
+
 }  // namespace
 
 struct Recorder::State {
@@ -77,6 +125,9 @@ struct Recorder::State {
     bool regions = false;        ///< SessionInfo::regions: find and follow them per frame
     RegionTracker tracker;
     std::vector<Region> last_regions;  ///< the last frame's (last_regions())
+    SessionInfo info;                  ///< the session (names for the between-frames errors)
+    std::optional<BetweenFrames> between;  ///< SessionInfo::between_frames
+    std::optional<Frame> previous;         ///< the last frame, owned (between frames only)
 
     State(RecorderConfig config_in, const SessionInfo& session, const Frame& first_frame)
         : config(std::move(config_in)),
@@ -84,7 +135,15 @@ struct Recorder::State {
           file(config.path, session, first_frame, copier.methods(), config.deflate_level),
           queue(config.queue_bytes),
           budget(config.budget_bytes, session.frame_end - session.frame_begin),
-          regions(session.regions) {}
+          regions(session.regions),
+          info(session) {
+        if (session.between_frames) {
+            BetweenFramesOptions options;
+            options.tolerance = session.ccd_tolerance;
+            options.self_collision = session.self_collision;
+            between.emplace(options);
+        }
+    }
 
     void write_loop();
     void rethrow_writer_error();
@@ -165,6 +224,16 @@ void Recorder::on_frame(const FrameReport& report) {
         m_state->last_regions = find_regions(report.frame, report.colliding_pairs);
         m_state->tracker.update(report.stats.frame, m_state->last_regions);
         record.regions = flatten(m_state->last_regions);
+    }
+    if (m_state->between) {
+        if (m_state->previous) {
+            try {
+                record.interval = flatten(m_state->between->detect(*m_state->previous, report.frame));
+            } catch (const InputError& error) {
+                throw InputError(located(m_state->info, error.what()));
+            }
+        }
+        m_state->previous = owned_copy(report.frame);
     }
     if (!m_state->queue.push(std::move(record))) m_state->rethrow_writer_error();
 }

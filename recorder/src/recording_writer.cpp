@@ -70,6 +70,7 @@ RecordingWriter::RecordingWriter(const std::filesystem::path& path, const Sessio
     create_frames(methods);
     create_details();
     if (session.regions) create_regions();
+    if (session.between_frames) create_intervals();
     create_objects(session, first, deflate_level);
     m_where.check(retry_while_locked([&] { return H5Fstart_swmr_write(m_file.get()); }),
                   "cannot start SWMR writing (another process kept the file open for 5 s?)");
@@ -108,6 +109,10 @@ void RecordingWriter::write_metadata(const SessionInfo& session) {
     if (!session.clip.empty()) h5::write_attr(m_where, root, schema::k_attr_clip, session.clip);
     if (session.up_axis != 0) h5::write_attr(m_where, root, schema::k_attr_up_axis, std::string(1, session.up_axis));
     if (session.regions) h5::write_attr(m_where, root, schema::k_attr_regions, std::int64_t{1});  // 1.5
+    if (session.between_frames) {  // 1.7
+        h5::write_attr(m_where, root, schema::k_attr_between_frames, std::int64_t{1});
+        h5::write_attr(m_where, root, schema::k_attr_ccd_tolerance, session.ccd_tolerance);
+    }
 }
 
 void RecordingWriter::create_frames(std::span<const std::string> methods) {
@@ -309,6 +314,7 @@ void RecordingWriter::write_frames(std::span<const FrameRecord> records, std::sp
                                    [](const FrameRecord& record) { return record.method; });
     append_details(records, keeps);
     if (m_regions.present) append_regions(records);
+    if (m_intervals.present) append_intervals(records);
     if (!m_frame_times.empty()) {
         append_per_frame<double>(m_time, H5T_NATIVE_DOUBLE, records, [&](const FrameRecord& record) {
             if (record.frame >= m_frame_times.size()) {
@@ -358,6 +364,7 @@ void RecordingWriter::close() {
     m_gpu_survivor_offsets.dataset.reset();
     m_depth = DepthColumns{};
     m_regions = RegionColumns{};
+    m_intervals = IntervalColumns{};
     if (m_reserve) m_reserve->close();
     if (m_file.valid() && !m_file.reset()) m_where.fail("cannot close the recording (disk full?)");
 }

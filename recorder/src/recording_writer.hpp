@@ -92,6 +92,13 @@ private:
     };
     void create_regions();
     void append_regions(std::span<const FrameRecord> records);
+    /// /intervals (schema 1.7, record --between-frames): write_intervals.cpp.
+    struct IntervalColumns {
+        Column offsets, counts, ms, tolerance, pairs, toi, flags;
+        bool present = false;
+    };
+    void create_intervals();
+    void append_intervals(std::span<const FrameRecord> records);
     DetailGroup create_detail_group(const std::string& group, const std::vector<std::pair<std::string, std::string>>& columns);
     /// One row per frame of `present` and of every value column; `member` picks a
     /// FrameRecord's (present flag, values) pair.
@@ -126,6 +133,7 @@ private:
     Column m_gpu_survivors, m_gpu_survivor_offsets;   ///< 1.2
     DepthColumns m_depth;                             ///< 1.2
     RegionColumns m_regions;                          ///< 1.5, with SessionInfo::regions
+    IntervalColumns m_intervals;                      ///< 1.7, with SessionInfo::between_frames
     std::vector<std::uint16_t> m_pixels;              ///< scratch: one image quantised
     std::vector<unsigned char> m_encoded;             ///< scratch: one positions chunk encoded
     std::vector<ObjectColumns> m_objects;

@@ -7,6 +7,7 @@
 #include "collidescope/error.hpp"
 #include "collidescope/recorder/schema.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace collidescope::recorder {
@@ -28,6 +29,7 @@ public:
         check_objects();
         check_pairs();
         check_regions();
+        check_intervals();
         return std::move(m_report);
     }
 
@@ -48,6 +50,8 @@ private:
     void check_object(std::uint32_t k);
     void check_pairs();
     void check_regions();
+    void check_intervals();
+    void check_interval(const RecordedInterval& interval, const std::string& where);
     /// Checks CSR offsets (frames + 1 entries used) against the flat array's rows.
     bool check_offsets(const std::string& path, const std::vector<std::uint64_t>& offsets, std::uint64_t flat_rows);
     std::uint64_t triangles_in_force(std::uint32_t object, std::uint32_t frame) const {
@@ -265,6 +269,66 @@ void Checker::check_regions() {
             problem(where + ": the regions hold " + std::to_string(region_pairs) + " pairs, the frame " + std::to_string(pairs));
         }
         previous_ids = std::move(ids);
+    }
+}
+
+// /intervals (1.7): every interval read back; its pairs sorted, unique, on triangles that exist,
+// each toi in [0, 1]; its counts those of its pairs; and the pairs touching at either frame
+// (/collisions, with the same self rule) among its pairs, since touching at t = 0 or t = 1 is
+// touching during the interval.
+void Checker::check_intervals() {
+    if (!m_rec.has_intervals()) return;
+    for (std::uint64_t r = 1; r < m_frames; ++r) {
+        const std::string where = std::string(schema::k_intervals) + ": frames " + std::to_string(m_indices[r - 1]) + "-" +
+                                  std::to_string(m_indices[r]);
+        try {
+            check_interval(m_rec.interval(r), where);
+        } catch (const InputError& error) {
+            problem(error.what());
+            return;
+        }
+    }
+}
+
+void Checker::check_interval(const RecordedInterval& interval, const std::string& where) {
+    const auto object_count = static_cast<std::uint32_t>(m_rec.objects().size());
+    const std::vector<IntervalContact>& contacts = interval.contacts;
+    std::uint64_t pass_throughs = 0, unresolved = 0;
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+        const IntervalContact& c = contacts[k];
+        const std::string name = where + ", pair " + std::to_string(k);
+        if (k > 0 && !(contacts[k - 1].pair < c.pair)) problem(name + " is out of order or repeated");
+        if (c.pair.obj_a >= object_count || c.pair.obj_b >= object_count) {
+            problem(name + " names an object that does not exist");
+            continue;
+        }
+        if (c.pair.tri_a >= triangles_in_force(c.pair.obj_a, interval.from_frame) ||
+            c.pair.tri_b >= triangles_in_force(c.pair.obj_b, interval.from_frame)) {
+            problem(name + " names a triangle its object does not have");
+        }
+        if (!(c.toi >= 0 && c.toi <= 1)) problem(name + " has a time of contact outside [0, 1]");
+        pass_throughs += c.pass_through ? 1 : 0;
+        unresolved += c.resolved ? 0 : 1;
+    }
+    const IntervalStats& s = interval.stats;
+    if (s.contacts != contacts.size() || s.pass_throughs != pass_throughs || s.unresolved != unresolved) {
+        problem(where + ": the counts say " + std::to_string(s.contacts) + " pairs, " + std::to_string(s.pass_throughs) +
+                " pass-throughs and " + std::to_string(s.unresolved) + " unresolved; the pairs hold " +
+                std::to_string(contacts.size()) + ", " + std::to_string(pass_throughs) + " and " + std::to_string(unresolved));
+    }
+    if (!(s.tolerance >= 0) || !std::isfinite(s.tolerance)) problem(where + ": the tolerance is negative, NaN or infinite");
+    for (const std::uint64_t end : {interval.row - 1, interval.row}) {
+        for (const TrianglePair& pair : m_rec.pairs(end)) {
+            const auto at = std::lower_bound(contacts.begin(), contacts.end(), pair,
+                                             [](const IntervalContact& c, const TrianglePair& p) { return c.pair < p; });
+            if (at == contacts.end() || at->pair != pair || at->pass_through) {
+                problem(where + ": the pair (" + std::to_string(pair.obj_a) + ", " + std::to_string(pair.tri_a) + ", " +
+                        std::to_string(pair.obj_b) + ", " + std::to_string(pair.tri_b) + ") collides at " +
+                        frame_name(end, m_indices) + " but the interval " +
+                        (at != contacts.end() && at->pair == pair ? "calls it a pass-through" : "does not report it"));
+                return;
+            }
+        }
     }
 }
 

@@ -41,6 +41,11 @@ RecordingData::RecordingData(const std::filesystem::path& path)
     m_modes.resize(frames);
     for (std::uint64_t row = 0; row < frames; ++row) m_modes[row] = frame_mode(m_methods[row], row_of(m_decision, row));
     m_lives = region_lives(m_recording, frames);
+    if (m_recording.has_intervals()) {
+        for (std::uint64_t row = 1; row < frames; ++row) {
+            if (m_recording.interval(row, false).stats.pass_throughs > 0) m_pass_through_rows.push_back(row);
+        }
+    }
 }
 
 std::vector<std::string> RecordingData::object_names() const {
@@ -159,6 +164,74 @@ FrameData RecordingData::load(std::uint64_t row, std::uint64_t ordinal) {
         mark(pair.obj_a, pair.tri_a, k_state_colliding);
         mark(pair.obj_b, pair.tri_b, k_state_colliding);
     }
+    return data;
+}
+
+FrameData RecordingData::load_moment(std::uint64_t row, std::uint64_t ordinal) {
+    FrameData data = load(row - 1, ordinal);
+    const recorder::RecordedInterval interval = m_recording.interval(row);
+    ContactMoment moment;
+    moment.to_frame = interval.to_frame;
+    moment.contacts = interval.stats.contacts;
+    moment.pass_throughs = interval.stats.pass_throughs;
+    moment.toi = 2;
+    for (const IntervalContact& c : interval.contacts) {
+        if (c.pass_through) moment.toi = std::min(moment.toi, c.toi);
+    }
+    if (moment.toi > 1) {
+        throw InputError(m_path + ": frames " + std::to_string(interval.from_frame) + "-" + std::to_string(interval.to_frame) +
+                         ": no pass-through in this interval");
+    }
+    for (const IntervalContact& c : interval.contacts) {
+        if (c.pass_through && c.toi == moment.toi) moment.first.push_back(c.pair);
+    }
+    // Only the moment's pairs are marked: the culling state, pairs and regions loaded are the
+    // first frame's, not the moment's.
+    data.pcs_recorded = false;
+    data.passes.clear();
+    data.depth_images.clear();
+    data.regions.clear();
+    data.colliding = moment.first;
+    const auto t = static_cast<float>(moment.toi);
+    for (std::uint32_t object = 0; object < object_count(); ++object) {
+        ObjectFrame& out = data.objects[object];
+        out.states.assign(out.triangles->size(), k_state_plain);
+        const std::vector<float> next = m_recording.positions(object, row);
+        if (next.size() != out.positions.size()) {  // --budget dropped one of the two frames
+            data.positions_dropped = data.positions_dropped || !out.triangles->empty();
+            out.positions.clear();
+            continue;
+        }
+        for (std::size_t i = 0; i < next.size(); ++i) out.positions[i] += t * (next[i] - out.positions[i]);
+    }
+    // The first pair's centre: the mean of its six corners at the moment.
+    double sum[3] = {0, 0, 0};
+    int corners = 0;
+    for (const TrianglePair& pair : moment.first) {
+        for (const auto& [object, triangle] : {std::pair{pair.obj_a, pair.tri_a}, std::pair{pair.obj_b, pair.tri_b}}) {
+            if (object >= data.objects.size() || triangle >= data.objects[object].states.size()) {
+                throw InputError(m_path + ": frames " + std::to_string(interval.from_frame) + "-" +
+                                 std::to_string(interval.to_frame) + ": object " + std::to_string(object) + " triangle " +
+                                 std::to_string(triangle) + " out of range");
+            }
+            ObjectFrame& out = data.objects[object];
+            out.states[triangle] = k_state_colliding;
+            if (out.positions.empty() || &pair != &moment.first.front()) continue;
+            for (const std::uint32_t v : (*out.triangles)[triangle]) {
+                if (3 * std::size_t(v) + 2 >= out.positions.size()) continue;  // validate names it
+                for (int k = 0; k < 3; ++k) {
+                    moment.corners[corners][k] = out.positions[3 * std::size_t(v) + k];
+                    sum[k] += moment.corners[corners][k];
+                }
+                ++corners;
+            }
+        }
+    }
+    if (corners == 6) {
+        for (int k = 0; k < 3; ++k) moment.point[k] = sum[k] / 6.0;
+        moment.point_known = true;
+    }
+    data.moment = std::move(moment);
     return data;
 }
 

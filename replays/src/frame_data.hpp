@@ -8,9 +8,11 @@
 #include "collidescope/replays/camera.hpp"
 #include "collidescope/types.hpp"
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -37,6 +39,20 @@ struct ObjectFrame {
 
 using NamedValues = std::vector<std::pair<std::string, double>>;
 
+/// The moment of first contact between two recorded frames (replay --contact-moments; record
+/// --between-frames): the earliest pass-through of the interval.
+struct ContactMoment {
+    std::uint32_t to_frame = 0;       ///< the interval's second frame (FrameData::frame is its first)
+    double toi = 0;                   ///< the first pass-through's time of contact (a lower bound)
+    std::vector<TrianglePair> first;  ///< the pairs with that time (FrameData::colliding too)
+    std::uint64_t contacts = 0;       ///< the interval's pairs
+    std::uint64_t pass_throughs = 0;  ///< of them, apart at both frames
+    std::array<double, 3> point{};    ///< the first pair's centre at toi (where the overlay marks it)
+    /// The first pair's six corners at toi (triangle a, then b), outlined over the meshes.
+    std::array<std::array<double, 3>, 6> corners{};
+    bool point_known = false;         ///< false when positions were dropped
+};
+
 /// One recorded frame, everything the image shows.
 struct FrameData {
     std::uint64_t row = 0;      ///< row in the recording
@@ -54,6 +70,7 @@ struct FrameData {
     std::vector<GpuDepthImage> depth_images;
     std::vector<TrianglePair> colliding;  ///< the frame's colliding pairs, sorted
     std::vector<recorder::RecordedRegion> regions;  ///< record --regions; empty otherwise
+    std::optional<ContactMoment> moment;  ///< set when the image is an interval's moment of contact
     std::uint64_t only_here = 0;  ///< --diff: pairs only this recording found
     bool pcs_recorded = false;    ///< survivors known (the frame ran the GPU cull)
     bool positions_dropped = false;
@@ -91,6 +108,8 @@ public:
     const std::vector<int>& modes() const { return m_modes; }       ///< frame_mode per row
     const std::vector<RegionLife>& lives() const { return m_lives; }  ///< every region's rows (record --regions)
     const std::vector<std::uint64_t>& pair_counts() const { return m_pair_counts; }
+    /// Rows r whose interval (from row r - 1 to row r; record --between-frames) has pass-throughs.
+    const std::vector<std::uint64_t>& pass_through_rows() const { return m_pass_through_rows; }
     std::size_t object_count() const { return m_recording.objects().size(); }
     std::vector<std::string> object_names() const;
     /// A root attribute as text ("" when missing).
@@ -104,6 +123,11 @@ public:
     std::vector<Bounds> collision_bounds(const std::vector<std::uint64_t>& rows);
     /// Everything of row `row`; the culling state in ObjectFrame::states.
     FrameData load(std::uint64_t row, std::uint64_t ordinal);
+    /// The moment of first contact of the interval from row `row - 1` to row `row` (one of
+    /// pass_through_rows()): the meshes interpolated to its first pass-through's time, that
+    /// pair's triangles colliding and nothing else marked; FrameData::moment set. The panel's
+    /// stats are row `row - 1`'s.
+    FrameData load_moment(std::uint64_t row, std::uint64_t ordinal);
 
 private:
     std::shared_ptr<const std::vector<TriIndices>> topology(std::uint32_t object, std::size_t index);
@@ -121,6 +145,7 @@ private:
     std::vector<RegionLife> m_lives;
     std::vector<int> m_modes;
     std::vector<std::uint64_t> m_pair_counts;
+    std::vector<std::uint64_t> m_pass_through_rows;
     std::map<std::pair<std::uint32_t, std::size_t>, std::shared_ptr<const std::vector<TriIndices>>> m_topologies;
 };
 

@@ -37,6 +37,8 @@ struct SessionView {
     const std::vector<int>* modes = nullptr;             ///< frame_mode per row
     const std::vector<std::uint32_t>* indices = nullptr;  ///< scene frame per row
     const std::vector<RegionLife>* lives = nullptr;        ///< regions' rows (record --regions)
+    /// Rows whose interval into them has pass-throughs (record --between-frames).
+    const std::vector<std::uint64_t>* pass_through_rows = nullptr;
 };
 
 /// "Mode 1 (AABB)", "Mode 2 (GPU cull)", "hybrid", "brute".

@@ -3,6 +3,7 @@
 
 #include "mesh_renderer.hpp"
 #include "overlay.hpp"
+#include "overlay_moment.hpp"
 #include "overlay_regions.hpp"
 #include "overlay_text.hpp"
 
@@ -122,10 +123,29 @@ void gpu_lines(const FrameData& frame) {
     }
 }
 
+// On a moment-of-contact image: which interval, when, which pair, and what else passed through.
+void moment_lines(const FrameData& frame, const SessionView& session) {
+    const ContactMoment& m = *frame.moment;
+    const std::array<float, 3> c = pass_through_colour();
+    ImGui::TextColored(ImVec4(c[0], c[1], c[2], 1), "between frames %u and %u, t = %.4f", frame.frame, m.to_frame,
+                       std::max(0.0, m.toi - 1e-4));
+    const auto name = [&](std::uint32_t object) {
+        return object < session.object_names.size() ? session.object_names[object] : std::to_string(object);
+    };
+    const TrianglePair& p = m.first.front();
+    ImGui::Text("first contact: %s #%u / %s #%u", name(p.obj_a).c_str(), p.tri_a, name(p.obj_b).c_str(), p.tri_b);
+    if (m.first.size() > 1) ImGui::Text("  and %zu more pairs at that time", m.first.size() - 1);
+    ImGui::Text("a pass-through: apart at both frames");
+    ImGui::Text("interval: %llu pairs, %llu pass-throughs", static_cast<unsigned long long>(m.contacts),
+                static_cast<unsigned long long>(m.pass_throughs));
+    ImGui::TextDisabled("meshes interpolated; stats: frame %u", frame.frame);
+}
+
 void panel(const FrameData& frame, const SessionView& session, const Rect& rect) {
     if (begin_window("panel", rect)) {
         ImGui::TextColored(ImVec4(1, 1, 1, 1), "frame %u   (%llu/%llu recorded)", frame.frame,
                            static_cast<unsigned long long>(frame.row + 1), static_cast<unsigned long long>(session.frames));
+        if (frame.moment) moment_lines(frame, session);
         ImGui::Text("scene %s", session.scene.c_str());
         const int mode = frame_mode(frame.method, frame.decision);
         const std::array<float, 3> c = mode_colour(mode);
@@ -211,6 +231,11 @@ void timeline(const FrameData& frame, const SessionView& session, const Rect& re
             const std::array<float, 3> c = mode_colour(mode);
             ImGui::TextColored(ImVec4(c[0], c[1], c[2], 1), "  %s", mode_name(mode));
         }
+        if (session.pass_through_rows != nullptr && !session.pass_through_rows->empty()) {
+            ImGui::SameLine();
+            const std::array<float, 3> c = pass_through_colour();
+            ImGui::TextColored(ImVec4(c[0], c[1], c[2], 1), "  v pass-through between frames");
+        }
         const ImVec2 at = ImGui::GetCursorScreenPos();
         const ImVec2 size = ImGui::GetContentRegionAvail();
         ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -224,7 +249,9 @@ void timeline(const FrameData& frame, const SessionView& session, const Rect& re
         if ((layers & k_layer_regions) != 0 && session.lives != nullptr) {
             draw_region_lives(*session.lives, at.x, at.y, size.x, size.y, step);
         }
-        const float x = at.x + step * (float(frame.row) + 0.5f);
+        if (session.pass_through_rows != nullptr) draw_pass_through_marks(*session.pass_through_rows, at.x, at.y, size.y, step);
+        // A moment of contact sits between its two frames' bars, at its time.
+        const float x = at.x + step * (float(frame.row) + 0.5f + (frame.moment ? float(frame.moment->toi) : 0.0f));
         draw->AddLine(ImVec2(x, at.y), ImVec2(x, at.y + size.y), IM_COL32(255, 255, 255, 255), 2.0f);
     }
     ImGui::End();
@@ -246,7 +273,9 @@ void legend(const FrameData& frame, const SessionView& session, const Rect& rect
         for (std::size_t k = 0; k < session.object_names.size() && k < 4; ++k) {
             swatch(object_colour(std::uint32_t(k)), session.object_names[k].c_str());
         }
-        if ((layers & k_layer_collisions) != 0) swatch(state_colour(k_state_colliding), "colliding");
+        if ((layers & k_layer_collisions) != 0) {
+            swatch(state_colour(k_state_colliding), frame.moment ? "first contact (pass-through)" : "colliding");
+        }
         if ((layers & k_layer_pcs) != 0) {
             if (frame.pcs_recorded) {
                 swatch(state_colour(k_state_pcs), "in PCS after cull");
@@ -275,6 +304,7 @@ void Overlay::draw_frame(const FrameData& frame, const SessionView& session, con
     }
     draw([&] {
         if ((layers & k_layer_regions) != 0 && camera != nullptr) draw_region_curves(frame, *camera, layout.scene);
+        if ((layers & k_layer_collisions) != 0 && camera != nullptr) draw_contact_marker(frame, *camera, layout.scene);
         if ((layers & k_layer_overlay) != 0) panel(frame, session, layout.panel);
         if ((layers & k_layer_depth) != 0) depth_column(frame, session, layout.depth, textures);
         if ((layers & k_layer_timeline) != 0) timeline(frame, session, layout.timeline, layers);

@@ -183,6 +183,7 @@ SessionView session_view(const RecordingData& data) {
     session.modes = &data.modes();
     session.indices = &data.indices();
     session.lives = &data.lives();
+    session.pass_through_rows = &data.pass_through_rows();
     return session;
 }
 
@@ -204,7 +205,26 @@ struct ReplayPlan {
     std::vector<bool> in_part;         ///< ordinal i is in this process's part (its PNG is written)
     std::vector<std::uint64_t> jobs;   ///< ordinals to render: the part's, then the sheet's others
     std::uint64_t own_frames = 0;      ///< ordinals in the part
+    /// --contact-moments: ordinals in the part whose interval into the next row has a
+    /// pass-through; rendered after `jobs`.
+    std::vector<std::uint64_t> moments;
 };
+
+// --contact-moments: the ordinals in the part whose row is followed by a pass-through interval.
+std::vector<std::uint64_t> moment_jobs(const RecordingData& data, const ReplayPlan& plan, const ReplayOptions& options) {
+    if (!options.contact_moments) return {};
+    if (!data.recording().has_intervals()) {
+        throw InputError(data.path() + ": --contact-moments needs a recording made with record --between-frames (it has "
+                         "no /intervals)");
+    }
+    if (options.output_dir.empty()) throw InputError("--contact-moments writes PNGs: give -o DIR");
+    const std::vector<std::uint64_t>& rows = data.pass_through_rows();
+    std::vector<std::uint64_t> out;
+    for (std::uint64_t i = 0; i < plan.rows.size(); ++i) {
+        if (plan.in_part[i] && std::binary_search(rows.begin(), rows.end(), plan.rows[i] + 1)) out.push_back(i);
+    }
+    return out;
+}
 
 ReplayPlan plan_replay(RecordingData& data, const ReplayOptions& options, ReplaySummary& summary) {
     ReplayPlan plan;
@@ -228,6 +248,7 @@ ReplayPlan plan_replay(RecordingData& data, const ReplayOptions& options, Replay
     plan.tile = sheet_tile_size(plan.layout.scene.w, plan.layout.scene.h);
     plan.jobs = render_jobs(data, plan.rows, options, picked, plan.in_part);
     plan.own_frames = static_cast<std::uint64_t>(std::count(plan.in_part.begin(), plan.in_part.end(), true));
+    plan.moments = moment_jobs(data, plan, options);
     return plan;
 }
 
@@ -249,13 +270,14 @@ struct Seen {
 };
 
 // Ordinal i's frame: read (under the reader's lock: one reader at a time), drawn and read back.
+// With `moment`, the moment of first contact between ordinal i's row and the next.
 RenderedFrame render_frame(RenderThread& thread, RecordingData& data, std::mutex& reader_lock,
-                           const ReplayPlan& plan, const ReplayOptions& options, std::uint64_t i) {
+                           const ReplayPlan& plan, const ReplayOptions& options, std::uint64_t i, bool moment = false) {
     StepClock clock;
     RenderedFrame out;
     {
         const std::lock_guard<std::mutex> guard(reader_lock);
-        out.frame = data.load(plan.rows[i], i);
+        out.frame = moment ? data.load_moment(plan.rows[i] + 1, i) : data.load(plan.rows[i], i);
     }
     out.read = clock.lap();
     const Camera camera = make_camera(plan.camera, plan.bounds, plan.layout.scene, i, plan.rows.size(),
@@ -313,13 +335,21 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
     const std::unique_ptr<OrderedVideo> video = open_ordered_video(data, options, summary);
 
     std::vector<std::filesystem::path> files(plan.rows.size());
+    std::vector<std::filesystem::path> moment_files(plan.moments.size());
     std::map<std::uint64_t, SheetTile> tiles;
     Seen seen;
     std::mutex reader_lock;
     std::mutex done_lock;
     const auto start = std::chrono::steady_clock::now();
-    summary.renderer = run_parallel(options.gl, options.threads, plan.jobs.size(), options.width, options.height,
-                                    [&](RenderThread& thread, std::uint64_t job) {
+    summary.renderer = run_parallel(options.gl, options.threads, plan.jobs.size() + plan.moments.size(), options.width,
+                                    options.height, [&](RenderThread& thread, std::uint64_t job) {
+        if (job >= plan.jobs.size()) {  // a moment of contact: its own PNG, nothing else
+            const std::uint64_t m = job - plan.jobs.size();
+            const RenderedFrame rendered = render_frame(thread, data, reader_lock, plan, options, plan.moments[m], true);
+            moment_files[m] = frame_file(options.output_dir, "contact", rendered.frame.frame);
+            write_png(moment_files[m], rendered.rgba, options.width, options.height);
+            return;
+        }
         const std::uint64_t i = plan.jobs[job];
         RenderedFrame rendered = render_frame(thread, data, reader_lock, plan, options, i);
         StepClock clock;
@@ -354,6 +384,7 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
     for (const std::filesystem::path& file : files) {
         if (!file.empty()) summary.files.push_back(file);
     }
+    summary.moment_files = std::move(moment_files);
     if (video) {
         video->finish(plan.rows.size());
         summary.video_seconds = video->seconds();

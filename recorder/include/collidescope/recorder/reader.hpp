@@ -85,6 +85,12 @@ public:
     /// Frame row `row`'s regions (empty without /regions); `curves` false leaves each region's
     /// curves empty and reads only the table, measures and predecessors (summaries).
     std::vector<RecordedRegion> regions(std::uint64_t row, bool curves = true) const;
+    /// True when the recording holds /intervals (record --between-frames; schema 1.7).
+    bool has_intervals() const;
+    /// The interval from row `row - 1` to row `row` (1 <= row < frames_complete()); with
+    /// `contacts` false, only its stats. Throws InputError without /intervals, for row 0, or
+    /// on a corrupt file (naming the dataset and row).
+    RecordedInterval interval(std::uint64_t row, bool contacts = true) const;
     /// Number of colliding pairs per complete frame (from the offsets).
     std::vector<std::uint64_t> pair_counts() const;
     /// x y z per vertex of object `object` at row `row`; empty when --budget dropped them.

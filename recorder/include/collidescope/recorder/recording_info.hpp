@@ -2,6 +2,8 @@
 /// What a recording holds besides its per-frame arrays: its objects and their topologies, a
 /// per-frame series, a virtual dataset's mappings (read by Recording, reader.hpp).
 
+#include "collidescope/between_frames.hpp"
+
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -46,6 +48,16 @@ struct RecordedRegion {
     };
     std::vector<Curve> curves;
     std::vector<std::uint32_t> predecessors;  ///< last frame's region ids it continues, strongest first
+};
+
+/// One interval between two recorded frames (/intervals, schema 1.7; record --between-frames;
+/// docs/explanation/between-frames.md): what BetweenFrames::detect returned for it.
+struct RecordedInterval {
+    std::uint64_t row = 0;         ///< the row of its second frame (>= 1)
+    std::uint32_t from_frame = 0;  ///< scene frame numbers of its two ends
+    std::uint32_t to_frame = 0;
+    IntervalStats stats;           ///< the tolerance, times and counts
+    std::vector<IntervalContact> contacts;  ///< sorted by pair; empty when not asked for
 };
 
 /// A per-frame series (one dataset of /frames/ms, /frames/counts or a /frames details group).

@@ -24,7 +24,9 @@ inline constexpr std::int64_t k_version_major = 1;
 /// scene's inputs say them (animated models, point caches); absent otherwise.
 /// 1.5: /regions and the root attribute `regions`, only in recordings made with `--regions`.
 /// 1.6: /regions/penetration (inside areas and depth), with /regions.
-inline constexpr std::int64_t k_version_minor = 6;
+/// 1.7: /intervals and the root attributes `between_frames` and `ccd_tolerance`, only in
+/// recordings made with `--between-frames`.
+inline constexpr std::int64_t k_version_minor = 7;
 
 // Root attributes.
 inline constexpr const char* k_attr_schema = "schema";
@@ -110,6 +112,28 @@ inline constexpr const char* k_region_predecessor_offsets = "/regions/predecesso
 inline constexpr const char* k_region_predecessors = "/regions/predecessors";
 /// Root attribute: 1 when the recording holds /regions (absent otherwise).
 inline constexpr const char* k_attr_regions = "regions";
+/// Between the frames (record --between-frames; schema 1.7; docs/explanation/between-frames.md):
+/// row r holds the interval from recorded frame r - 1 to frame r (row 0: none, zeros and NaN).
+inline constexpr const char* k_intervals = "/intervals";
+inline constexpr const char* k_interval_offsets = "/intervals/offsets";  ///< (F + 1) uint64 into the contact rows
+/// (F, 7) uint64 per interval: candidate_pairs, start_contacts, primitive_queries,
+/// inclusion_boxes, contacts, pass_throughs, unresolved (IntervalStats).
+inline constexpr const char* k_interval_counts = "/intervals/counts";
+/// (F, 3) float64 per interval: broad, narrow and total ms.
+inline constexpr const char* k_interval_ms = "/intervals/ms";
+/// (F) float64: the tolerance δ the interval was decided with (NaN in row 0).
+inline constexpr const char* k_interval_tolerance = "/intervals/tolerance";
+inline constexpr const char* k_interval_pairs = "/intervals/pairs";  ///< (P, 4) uint32: obj_a tri_a obj_b tri_b
+/// (P) float64: a lower bound of each pair's first time of contact in [0, 1].
+inline constexpr const char* k_interval_toi = "/intervals/toi";
+/// (P) uint8 per pair: bit 0 pass-through (apart at both frames), bit 1 unresolved.
+inline constexpr const char* k_interval_flags = "/intervals/flags";
+inline constexpr std::uint8_t k_flag_pass_through = 1;
+inline constexpr std::uint8_t k_flag_unresolved = 2;
+/// Root attribute: 1 when the recording holds /intervals (absent otherwise).
+inline constexpr const char* k_attr_between_frames = "between_frames";
+/// Root attribute: the --ccd-tolerance asked for (0: automatic, per interval).
+inline constexpr const char* k_attr_ccd_tolerance = "ccd_tolerance";
 inline constexpr const char* k_objects = "/objects";
 // Inside /objects/<k>/ (k = 0, 1, ... in input order):
 inline constexpr const char* k_triangles = "triangles";                  ///< (T, 3) uint32

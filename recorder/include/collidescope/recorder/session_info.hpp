@@ -21,6 +21,9 @@ struct SessionInfo {
     std::string depth = "off";              ///< --depth: "off" or "every:N" (nothing to record before Mode 2)
     std::string gl_renderer;                ///< GL_RENDERER of the cull's context ("" without GPU cull)
     bool regions = false;                   ///< record --regions: /regions per frame (schema 1.5)
+    /// record --between-frames: /intervals, each frame with the one before it (schema 1.7).
+    bool between_frames = false;
+    double ccd_tolerance = 0;               ///< --ccd-tolerance (0: automatic)
     /// Pixels of one depth image (the cull's resolution squared): the depth pixels' chunk, so
     /// each image is one chunk, written once. 0: 65536.
     std::uint64_t depth_image_pixels = 0;

@@ -102,6 +102,11 @@ struct ReplayOptions {
     std::filesystem::path contact_sheet;  ///< "" = none
     SheetSelection sheet_selection = SheetSelection::Every;
     int sheet_count = 12;  ///< frames on the contact sheet, at most
+    /// Also render, for every replayed frame whose interval into the next recorded frame has a
+    /// pass-through (record --between-frames), its moment of first contact:
+    /// `output_dir`/contact_NNNN.png (NNNN = the interval's first scene frame), the meshes
+    /// interpolated to the earliest pass-through's time, that pair highlighted and ringed.
+    bool contact_moments = false;
 };
 
 }  // namespace collidescope::replays

@@ -25,6 +25,8 @@ struct ReplaySummary {
     double video_fps = 0;                 ///< its frame rate
     double video_seconds = 0;             ///< seconds spent encoding it (thread seconds, within `seconds`)
     std::filesystem::path contact_sheet;  ///< "" when none was asked for
+    /// ReplayOptions::contact_moments: the moment-of-contact PNGs written, in frame order.
+    std::vector<std::filesystem::path> moment_files;
     double seconds = 0;                   ///< wall time of the rendering (after reading the metadata)
     int threads = 0;                      ///< render threads used
     std::uint64_t triangles = 0;          ///< triangles of the first replayed frame
