@@ -69,6 +69,7 @@ void print_between_frames(const nlohmann::ordered_json& b) {
         std::cout << "; first pass-through frames " << first["frames"][0] << "-" << first["frames"][1] << " at t = " << toi
                   << ": object " << first["pair"][0] << " triangle " << first["pair"][1] << " with object "
                   << first["pair"][2] << " triangle " << first["pair"][3];
+        if (!first["resolved"].get<bool>()) std::cout << " (unresolved)";
     }
     std::cout << "; tolerance " << b["tolerance_min"].get<double>();
     if (b["tolerance_max"] != b["tolerance_min"]) std::cout << " to " << b["tolerance_max"].get<double>();

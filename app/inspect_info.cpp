@@ -111,7 +111,8 @@ nlohmann::ordered_json region_summary(const recorder::Recording& rec, const std:
 }
 
 // /intervals (record --between-frames): the intervals' totals, the one with the most
-// pass-throughs, and the first pass-through of the run (its interval, pair and time).
+// pass-throughs, and the first pass-through of the run (the first interval with any; its
+// earliest resolved one, else its earliest: interval, pair and time).
 nlohmann::ordered_json interval_summary(const recorder::Recording& rec) {
     std::uint64_t intervals = 0, with_contact = 0, pairs = 0, pass_throughs = 0, unresolved = 0, most = 0, most_row = 0,
                   first_row = 0;
@@ -140,13 +141,18 @@ nlohmann::ordered_json interval_summary(const recorder::Recording& rec) {
     out["first_pass_through"] = nlohmann::ordered_json();
     if (first_row > 0) {
         const recorder::RecordedInterval i = rec.interval(first_row);
+        // Resolved ones first (their time is proven within the tolerance), as replay's moments.
         const IntervalContact* first = nullptr;
         for (const IntervalContact& c : i.contacts) {
-            if (c.pass_through && (first == nullptr || c.toi < first->toi)) first = &c;
+            if (!c.pass_through) continue;
+            const bool earlier = first == nullptr || (c.resolved && !first->resolved) ||
+                                 (c.resolved == first->resolved && c.toi < first->toi);
+            if (earlier) first = &c;
         }
         out["first_pass_through"] = {{"frames", {i.from_frame, i.to_frame}},
                                      {"pair", {first->pair.obj_a, first->pair.tri_a, first->pair.obj_b, first->pair.tri_b}},
-                                     {"toi", first->toi}};
+                                     {"toi", first->toi},
+                                     {"resolved", first->resolved}};
     }
     return out;
 }

@@ -222,3 +222,48 @@ def test_regions_absent_is_a_clear_error(tmp_path, cli):
         assert not rec.has_regions
         with pytest.raises(ValueError, match="no regions recorded"):
             rec.regions(rec.frames[0])
+
+
+def test_intervals_equal_check_between_frames(tmp_path, cli):
+    """record --between-frames read back: intervals() and interval_contacts(frame) hold what
+    `check --between-frames` wrote for the same frames (pairs, pass-through flags, toi within the
+    printed digits, counts)."""
+    import json
+    scene = ["--scene", "demo", "--frames", "17:23"]
+    code, _, err = run_cli(cli, "record", *scene, "--between-frames", "-o", str(tmp_path / "r.h5"), "-q")
+    assert code == 0, err
+    code, _, err = run_cli(cli, "check", *scene, "--between-frames", "--exit-zero", "-q",
+                           "--pairs", str(tmp_path / "p.tsv"), "--stats", str(tmp_path / "s.jsonl"))
+    assert code == 0, err
+    rows = [line.split("\t") for line in (tmp_path / "p.tsv").read_text().splitlines() if line and line[0].isdigit()]
+    stats = [json.loads(line) for line in (tmp_path / "s.jsonl").read_text().splitlines()]
+    with collidescope.open(str(tmp_path / "r.h5")) as rec:
+        assert rec.has_intervals
+        intervals = rec.intervals()
+        assert list(intervals.from_frame) == list(range(17, 22)) and list(intervals.to_frame) == list(range(18, 23))
+        for interval, line in zip(intervals, stats):
+            assert [int(interval.from_frame), int(interval.to_frame)] == line["interval"]
+            for name, value in line["counts"].items():
+                assert int(interval[name]) == value, name
+        got = []
+        for frame in intervals.from_frame:
+            for c in rec.interval_contacts(frame):
+                got.append((int(frame), int(c.obj_a), int(c.tri_a), int(c.obj_b), int(c.tri_b), float(c.toi),
+                            bool(c.pass_through)))
+        with pytest.raises(IndexError, match="last recorded frame"):
+            rec.interval_contacts(22)
+    assert intervals.pass_throughs.sum() > 0
+    assert len(got) == len(rows)
+    for mine, theirs in zip(got, rows):
+        assert mine[:5] == tuple(int(v) for v in theirs[:5])
+        assert mine[6] == (theirs[6] == "1")
+        assert 0 <= mine[5] - float(theirs[5]) < 2e-9  # check prints toi rounded down to 9 digits
+
+
+def test_intervals_absent_is_a_clear_error(tmp_path, cli):
+    code, _, err = run_cli(cli, "record", "--scene", "C:small", "--frames", "0:2", "-o", str(tmp_path / "p.h5"), "-q")
+    assert code == 0, err
+    with collidescope.open(str(tmp_path / "p.h5")) as rec:
+        assert not rec.has_intervals
+        with pytest.raises(ValueError, match="no intervals recorded"):
+            rec.intervals()

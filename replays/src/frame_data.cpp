@@ -174,16 +174,21 @@ FrameData RecordingData::load_moment(std::uint64_t row, std::uint64_t ordinal) {
     moment.to_frame = interval.to_frame;
     moment.contacts = interval.stats.contacts;
     moment.pass_throughs = interval.stats.pass_throughs;
+    // The earliest resolved pass-through (its time proven within the tolerance); the earliest
+    // unresolved one only when the interval has no other.
+    moment.resolved = std::any_of(interval.contacts.begin(), interval.contacts.end(),
+                                  [](const IntervalContact& c) { return c.pass_through && c.resolved; });
+    const auto counts = [&](const IntervalContact& c) { return c.pass_through && c.resolved == moment.resolved; };
     moment.toi = 2;
     for (const IntervalContact& c : interval.contacts) {
-        if (c.pass_through) moment.toi = std::min(moment.toi, c.toi);
+        if (counts(c)) moment.toi = std::min(moment.toi, c.toi);
     }
     if (moment.toi > 1) {
         throw InputError(m_path + ": frames " + std::to_string(interval.from_frame) + "-" + std::to_string(interval.to_frame) +
                          ": no pass-through in this interval");
     }
     for (const IntervalContact& c : interval.contacts) {
-        if (c.pass_through && c.toi == moment.toi) moment.first.push_back(c.pair);
+        if (counts(c) && c.toi == moment.toi) moment.first.push_back(c.pair);
     }
     // Only the moment's pairs are marked: the culling state, pairs and regions loaded are the
     // first frame's, not the moment's.

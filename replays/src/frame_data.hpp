@@ -40,10 +40,12 @@ struct ObjectFrame {
 using NamedValues = std::vector<std::pair<std::string, double>>;
 
 /// The moment of first contact between two recorded frames (replay --contact-moments; record
-/// --between-frames): the earliest pass-through of the interval.
+/// --between-frames): the earliest pass-through of the interval whose time is proven within the
+/// tolerance (resolved), or the earliest unresolved one when it has no other.
 struct ContactMoment {
     std::uint32_t to_frame = 0;       ///< the interval's second frame (FrameData::frame is its first)
     double toi = 0;                   ///< the first pass-through's time of contact (a lower bound)
+    bool resolved = true;             ///< false: every pass-through of the interval is unresolved
     std::vector<TrianglePair> first;  ///< the pairs with that time (FrameData::colliding too)
     std::uint64_t contacts = 0;       ///< the interval's pairs
     std::uint64_t pass_throughs = 0;  ///< of them, apart at both frames

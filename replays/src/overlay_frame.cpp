@@ -136,6 +136,7 @@ void moment_lines(const FrameData& frame, const SessionView& session) {
     ImGui::Text("first contact: %s #%u / %s #%u", name(p.obj_a).c_str(), p.tri_a, name(p.obj_b).c_str(), p.tri_b);
     if (m.first.size() > 1) ImGui::Text("  and %zu more pairs at that time", m.first.size() - 1);
     ImGui::Text("a pass-through: apart at both frames");
+    if (!m.resolved) ImGui::TextDisabled("unresolved: within the tolerance not proven");
     ImGui::Text("interval: %llu pairs, %llu pass-throughs", static_cast<unsigned long long>(m.contacts),
                 static_cast<unsigned long long>(m.pass_throughs));
     ImGui::TextDisabled("meshes interpolated; stats: frame %u", frame.frame);
