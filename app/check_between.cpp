@@ -19,28 +19,9 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
-#include <regex>
 #include <thread>
 
 namespace collidescope::app {
-namespace {
-
-// The engine's message with the scene named and each "object N" given its name.
-std::string located(const std::string& scene, const std::vector<std::string>& names, const std::string& message) {
-    std::string out;
-    const std::regex object(R"(object (\d+))");
-    auto begin = std::sregex_iterator(message.begin(), message.end(), object);
-    std::size_t at = 0;
-    for (auto it = begin; it != std::sregex_iterator(); ++it) {
-        const std::size_t index = std::stoul((*it)[1]);
-        out += message.substr(at, static_cast<std::size_t>(it->position()) - at) + it->str();
-        if (index < names.size()) out += " ('" + names[index] + "')";
-        at = static_cast<std::size_t>(it->position() + it->length());
-    }
-    return scene + ": " + out + message.substr(at);
-}
-
-}  // namespace
 
 double printed_toi(double toi, double unit) { return std::max(0.0, toi - 0.6 * unit); }
 
@@ -156,7 +137,7 @@ int run_check_between(const BetweenFramesRun& run) {
         try {
             result = detector.detect(from, to);
         } catch (const InputError& e) {
-            throw InputError(located(label, names, e.what()));
+            throw InputError(label + ": " + with_object_names(e.what(), names));
         }
         announce();
         totals.add(result);

@@ -17,7 +17,6 @@
 #include <exception>
 #include <mutex>
 #include <optional>
-#include <regex>
 #include <thread>
 
 #include <sys/resource.h>
@@ -92,21 +91,6 @@ Frame owned_copy(const Frame& frame) {
         out.objects.push_back({object.topology, std::vector<Vec3>(object.vertices.begin(), object.vertices.end())});
     }
     return out;
-}
-
-// The engine's message ("object 1 changes its mesh between frames 3 and 4") with the scene
-// named and each "object N" given its name.
-std::string located(const SessionInfo& session, const std::string& message) {
-    std::string out = "scene '" + session.scene + "': ";
-    const std::regex object(R"(object (\d+))");
-    std::size_t at = 0;
-    for (auto it = std::sregex_iterator(message.begin(), message.end(), object); it != std::sregex_iterator(); ++it) {
-        const std::size_t index = std::stoul((*it)[1]);
-        out += message.substr(at, static_cast<std::size_t>(it->position()) - at) + it->str();
-        if (index < session.object_names.size()) out += " ('" + session.object_names[index] + "')";
-        at = static_cast<std::size_t>(it->position() + it->length());
-    }
-    return out + message.substr(at);
 }
 
 }  // namespace
@@ -230,7 +214,7 @@ void Recorder::on_frame(const FrameReport& report) {
             try {
                 record.interval = flatten(m_state->between->detect(*m_state->previous, report.frame));
             } catch (const InputError& error) {
-                throw InputError(located(m_state->info, error.what()));
+                throw InputError("scene '" + m_state->info.scene + "': " + with_object_names(error.what(), m_state->info.object_names));
             }
         }
         m_state->previous = owned_copy(report.frame);

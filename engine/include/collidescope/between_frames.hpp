@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace collidescope {
@@ -92,6 +93,10 @@ private:
     BetweenFramesOptions m_options;
     std::unique_ptr<State> m_state;
 };
+
+/// `message` (a BetweenFrames::detect error) with each "object N" followed by its name from
+/// `names` ("object 1 ('hand')"), for the tools that know the names.
+std::string with_object_names(const std::string& message, const std::vector<std::string>& names);
 
 /// The slow, obviously correct evaluation that the tests hold BetweenFrames to: every
 /// triangle pair (no trees; only the box of each triangle's corners at both ends), each query

@@ -2,10 +2,12 @@
 
 #include "ccd/interval_checks.hpp"
 
+#include "collidescope/between_frames.hpp"
 #include "collidescope/error.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <regex>
 #include <string>
 
 namespace collidescope::ccd {
@@ -69,3 +71,20 @@ double interval_tolerance(const Frame& from, const Frame& to, double requested) 
 }
 
 }  // namespace collidescope::ccd
+
+namespace collidescope {
+
+std::string with_object_names(const std::string& message, const std::vector<std::string>& names) {
+    const std::regex object(R"(object (\d+))");
+    std::string out;
+    std::size_t at = 0;
+    for (auto it = std::sregex_iterator(message.begin(), message.end(), object); it != std::sregex_iterator(); ++it) {
+        const std::size_t index = std::stoul((*it)[1]);
+        out += message.substr(at, static_cast<std::size_t>(it->position()) - at) + it->str();
+        if (index < names.size()) out += " ('" + names[index] + "')";
+        at = static_cast<std::size_t>(it->position() + it->length());
+    }
+    return out + message.substr(at);
+}
+
+}  // namespace collidescope
