@@ -229,12 +229,13 @@ Command add_check_command(CLI::App& app) {
     check->add_option("--regions", options->regions,
                       "Write the interpenetration regions (curves, ids over frames) as JSON Lines (- = stdout)")
         ->type_name("FILE");
-    check->add_flag("--between-frames", options->between_frames,
+    CLI::Option* between = check->add_flag("--between-frames", options->between_frames,
                     "Continuous detection between consecutive frames (linear motion): pairs that touch at any "
                     "time in an interval, pass-throughs included");
     check->add_option("--ccd-tolerance", options->ccd_tolerance,
                       "With --between-frames: a reported pair comes within this distance of touching (0: 1e-6 of "
                       "each interval's extent)")
+        ->needs(between)
         ->type_name("D");
     check->add_flag("--exit-zero", options->exit_zero, "Exit 0 even when collisions are found");
     check->add_flag("-q,--quiet", options->quiet, "Only the total line on stderr, no per-frame lines");

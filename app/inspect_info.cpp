@@ -3,6 +3,8 @@
 
 #include "inspect_info.hpp"
 
+#include "collidescope/error.hpp"
+#include "collidescope/recorder/schema.hpp"
 #include "collidescope/stats.hpp"
 
 #include <algorithm>
@@ -117,8 +119,9 @@ nlohmann::ordered_json interval_summary(const recorder::Recording& rec) {
     std::uint64_t intervals = 0, with_contact = 0, pairs = 0, pass_throughs = 0, unresolved = 0, most = 0, most_row = 0,
                   first_row = 0;
     double ms = 0, tolerance_min = 0, tolerance_max = 0;
-    for (std::uint64_t r = 1; r < rec.frames_complete(); ++r) {
-        const IntervalStats s = rec.interval(r, false).stats;
+    const std::vector<IntervalStats> all = rec.interval_stats();
+    for (std::uint64_t r = 1; r < all.size(); ++r) {
+        const IntervalStats& s = all[r];
         tolerance_min = intervals == 0 ? s.tolerance : std::min(tolerance_min, s.tolerance);
         tolerance_max = intervals == 0 ? s.tolerance : std::max(tolerance_max, s.tolerance);
         ++intervals;
@@ -148,6 +151,11 @@ nlohmann::ordered_json interval_summary(const recorder::Recording& rec) {
             const bool earlier = first == nullptr || (c.resolved && !first->resolved) ||
                                  (c.resolved == first->resolved && c.toi < first->toi);
             if (earlier) first = &c;
+        }
+        if (first == nullptr) {
+            throw InputError(rec.path() + ": " + recorder::schema::k_interval_flags + ": frames " + std::to_string(i.from_frame) + "-" +
+                             std::to_string(i.to_frame) + ": the counts say " + std::to_string(i.stats.pass_throughs) +
+                             " pass-throughs, the flags none (corrupt recording; validate says more)");
         }
         out["first_pass_through"] = {{"frames", {i.from_frame, i.to_frame}},
                                      {"pair", {first->pair.obj_a, first->pair.tri_a, first->pair.obj_b, first->pair.tri_b}},

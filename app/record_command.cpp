@@ -222,14 +222,15 @@ Command add_record_command(CLI::App& app) {
         ->capture_default_str();
     record->add_flag("--regions", options->regions,
                      "Record each frame's interpenetration regions and their curves (/regions; docs/explanation/regions.md)");
-    record->add_flag("--between-frames", options->between_frames,
+    CLI::Option* between = record->add_flag("--between-frames", options->between_frames,
                      "Also test each frame with the one before it, vertices moving linearly between them, and record "
                      "each interval's pairs, times of contact and pass-throughs (/intervals; "
                      "docs/explanation/between-frames.md)");
     record->add_option("--ccd-tolerance", options->ccd_tolerance,
                        "With --between-frames: the tolerance delta of the times of contact, in scene units (0: 1e-6 of "
                        "each interval's extent)")
-        ->check(non_negative_number("(a distance in scene units; 0: automatic)"))
+        ->check(non_negative_number("in scene units (0: automatic)"))
+        ->needs(between)
         ->type_name("D");
     record->add_flag("-q,--quiet", options->quiet, "Only the final line on stderr");
     return {record, [options] { return run_record(*options); }};

@@ -167,6 +167,9 @@ std::string rate_line(const replays::ReplaySummary& summary, const replays::Repl
 
 // The argument combinations replay refuses, each with its one line.
 void check_replay_arguments(const ReplayCliOptions& cli) {
+    if (cli.diff && cli.contact_moments) {
+        throw InputError("--contact-moments renders one recording's intervals: not with --diff");
+    }
     if (cli.diff != (cli.recordings.size() == 2)) {
         throw InputError(cli.diff ? "--diff needs two recordings: replay --diff A.h5 B.h5 -o DIR"
                                   : "replay takes one recording (two with --diff)");
@@ -209,7 +212,8 @@ public:
         // "replay: interrupted by SIGINT[; clip.mp4 not written]; 12 of 60 frames rendered[, every PNG in DIR complete]"
         std::string line = "replay: interrupted by " + signal_name(signal);
         if (!m_cli.video.empty()) line += "; " + m_cli.video + " not written";
-        line += "; " + std::to_string(m_done) + " of " + std::to_string(m_expected) + " frames rendered";
+        line += "; " + std::to_string(m_done) + " of " + std::to_string(m_expected) +
+                (m_cli.contact_moments ? " images (frames and moments of contact) rendered" : " frames rendered");
         if (!m_cli.output.empty()) line += ", every PNG in " + m_cli.output + " complete";
         std::fprintf(stderr, "%s\n", line.c_str());
         return interrupted_exit_code(signal);
@@ -259,7 +263,11 @@ void print_replay_summary(const ReplayCliOptions& cli, const replays::ReplayOpti
                     static_cast<unsigned long long>(summary.frames), summary.video_fps, summary.video_seconds);
     }
     if (!summary.contact_sheet.empty()) std::printf("contact sheet: %s\n", summary.contact_sheet.c_str());
-    if (options.contact_moments) {
+    if (options.contact_moments && ranks::parallel()) {
+        ranks::summary_line({double(summary.moment_files.size())}, [](const std::vector<double>& sums) {
+            return "moments of contact: " + std::to_string(static_cast<std::uint64_t>(sums[0])) + " (contact_NNNN.png)";
+        }, true);
+    } else if (options.contact_moments) {
         if (summary.moment_files.empty()) {
             std::printf("moments of contact: none (no pass-through between the replayed frames)\n");
         } else {

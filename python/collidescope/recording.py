@@ -335,11 +335,17 @@ class Recording:
             raise IndexError("%s: frame %d is the last recorded frame; no interval starts there" % (self.path, frame))
         i = self._file["intervals"]
         a, b = (int(v) for v in i["offsets"][row:row + 2])
+        if not 0 <= a <= b <= min(len(i["pairs"]), len(i["toi"]), len(i["flags"])):
+            raise RecordingError("%s: intervals/offsets rows %d-%d (%d, %d) are out of order or past the pairs "
+                                 "(corrupt recording)" % (self.path, row, row + 1, a, b))
         out = np.zeros(b - a, dtype=CONTACT_DTYPE)
         pairs = i["pairs"][a:b]
         for k, name in enumerate(("obj_a", "tri_a", "obj_b", "tri_b")):
             out[name] = pairs[:, k]
         out["toi"] = i["toi"][a:b]
+        if not np.all((out["toi"] >= 0) & (out["toi"] <= 1)):
+            raise RecordingError("%s: intervals/toi rows %d-%d hold a time outside [0, 1] (corrupt recording)"
+                                 % (self.path, a, b))
         flags = i["flags"][a:b]
         out["pass_through"] = (flags & 1) != 0
         out["resolved"] = (flags & 2) == 0

@@ -241,6 +241,7 @@ def test_intervals_equal_check_between_frames(tmp_path, cli):
         assert rec.has_intervals
         intervals = rec.intervals()
         assert list(intervals.from_frame) == list(range(17, 22)) and list(intervals.to_frame) == list(range(18, 23))
+        assert len(intervals) == len(stats) == 5
         for interval, line in zip(intervals, stats):
             assert [int(interval.from_frame), int(interval.to_frame)] == line["interval"]
             for name, value in line["counts"].items():

@@ -71,7 +71,9 @@ void Checker::check_units_and_lengths() {
     for (const std::string& path : m_rec.dataset_paths()) {
         if (m_rec.unit_of(path).empty()) problem(path + ": no '" + schema::k_attr_unit + "' attribute");
         // Per-frame datasets all have one row per frame once the file is finished.
-        if (m_report.finished && path.rfind(frames_prefix, 0) == 0 && m_rec.rows_of(path) != m_frames) {
+        const bool per_frame = path.rfind(frames_prefix, 0) == 0 || path == schema::k_interval_counts ||
+                               path == schema::k_interval_ms || path == schema::k_interval_tolerance;
+        if (m_report.finished && per_frame && m_rec.rows_of(path) != m_frames) {
             problem(path + ": " + std::to_string(m_rec.rows_of(path)) + " rows, but " + std::to_string(m_frames) +
                     " frames are complete");
         }
@@ -278,6 +280,19 @@ void Checker::check_regions() {
 // touching during the interval.
 void Checker::check_intervals() {
     if (!m_rec.has_intervals()) return;
+    const std::vector<std::uint64_t> offsets = m_rec.read_u64(schema::k_interval_offsets);
+    if (!check_offsets(schema::k_interval_offsets, offsets, m_rec.rows_of(schema::k_interval_pairs))) return;
+    if (offsets.size() > 1 && offsets[1] != 0) {
+        problem(std::string(schema::k_interval_offsets) + ": row 0 (which ends no interval) holds pairs");
+    }
+    // One toi and one flag per pair once the file is finished (a killed writer may leave them
+    // shorter or longer than the pairs past the last complete frame).
+    for (const char* path : {schema::k_interval_toi, schema::k_interval_flags}) {
+        if (m_report.finished && m_rec.rows_of(path) != m_rec.rows_of(schema::k_interval_pairs)) {
+            problem(std::string(path) + ": " + std::to_string(m_rec.rows_of(path)) + " rows, " + schema::k_interval_pairs + " " +
+                    std::to_string(m_rec.rows_of(schema::k_interval_pairs)));
+        }
+    }
     for (std::uint64_t r = 1; r < m_frames; ++r) {
         const std::string where = std::string(schema::k_intervals) + ": frames " + std::to_string(m_indices[r - 1]) + "-" +
                                   std::to_string(m_indices[r]);

@@ -41,10 +41,9 @@ RecordingData::RecordingData(const std::filesystem::path& path)
     m_modes.resize(frames);
     for (std::uint64_t row = 0; row < frames; ++row) m_modes[row] = frame_mode(m_methods[row], row_of(m_decision, row));
     m_lives = region_lives(m_recording, frames);
-    if (m_recording.has_intervals()) {
-        for (std::uint64_t row = 1; row < frames; ++row) {
-            if (m_recording.interval(row, false).stats.pass_throughs > 0) m_pass_through_rows.push_back(row);
-        }
+    const std::vector<IntervalStats> intervals = m_recording.interval_stats();
+    for (std::uint64_t row = 1; row < intervals.size() && row < frames; ++row) {
+        if (intervals[row].pass_throughs > 0) m_pass_through_rows.push_back(row);
     }
 }
 

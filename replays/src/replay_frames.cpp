@@ -348,6 +348,8 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
             const RenderedFrame rendered = render_frame(thread, data, reader_lock, plan, options, plan.moments[m], true);
             moment_files[m] = frame_file(options.output_dir, "contact", rendered.frame.frame);
             write_png(moment_files[m], rendered.rgba, options.width, options.height);
+            const std::lock_guard<std::mutex> guard(done_lock);
+            if (frame_done) frame_done(plan.own_frames + plan.moments.size());  // may stop the replay (a signal)
             return;
         }
         const std::uint64_t i = plan.jobs[job];
@@ -379,7 +381,7 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
         seen.decision = seen.decision || !frame.decision.empty();
         seen.dropped += frame.positions_dropped ? 1 : 0;
         ++summary.frames;
-        if (frame_done) frame_done(plan.own_frames);
+        if (frame_done) frame_done(plan.own_frames + plan.moments.size());
     });
     for (const std::filesystem::path& file : files) {
         if (!file.empty()) summary.files.push_back(file);
@@ -390,7 +392,7 @@ ReplaySummary replay(const std::filesystem::path& recording, const ReplayOptions
         summary.video_seconds = video->seconds();
     }
     summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    summary.threads = render_threads(options.threads, plan.jobs.size());
+    summary.threads = render_threads(options.threads, plan.jobs.size() + plan.moments.size());
     add_notes(options, plan, seen, summary);
     if (!options.contact_sheet.empty()) {
         std::vector<SheetTile> ordered;

@@ -128,8 +128,11 @@ Scene varying_vertex_counts(std::uint64_t seed, std::uint32_t frames) {
     return scene;
 }
 
-void overwrite_u64(const std::filesystem::path& file, const std::string& dataset, std::uint64_t index,
-                   std::uint64_t value) {
+namespace {
+
+// Element `index` of 1-D `dataset` set to `*value`, given as `mem_type`.
+void overwrite_element(const std::filesystem::path& file, const std::string& dataset, std::uint64_t index, hid_t mem_type,
+                       const void* value) {
     const hid_t f = open_rw(file);
     const hid_t d = H5Dopen2(f, dataset.c_str(), H5P_DEFAULT);
     ASSERT_GE(d, 0) << dataset;
@@ -137,11 +140,22 @@ void overwrite_u64(const std::filesystem::path& file, const std::string& dataset
     const hsize_t start = index, count = 1;
     H5Sselect_hyperslab(space, H5S_SELECT_SET, &start, nullptr, &count, nullptr);
     const hid_t mem = H5Screate_simple(1, &count, nullptr);
-    EXPECT_GE(H5Dwrite(d, H5T_NATIVE_UINT64, mem, space, H5P_DEFAULT, &value), 0);
+    EXPECT_GE(H5Dwrite(d, mem_type, mem, space, H5P_DEFAULT, value), 0);
     H5Sclose(mem);
     H5Sclose(space);
     H5Dclose(d);
     H5Fclose(f);
+}
+
+}  // namespace
+
+void overwrite_f64(const std::filesystem::path& file, const std::string& dataset, std::uint64_t index, double value) {
+    overwrite_element(file, dataset, index, H5T_NATIVE_DOUBLE, &value);
+}
+
+void overwrite_u64(const std::filesystem::path& file, const std::string& dataset, std::uint64_t index,
+                   std::uint64_t value) {
+    overwrite_element(file, dataset, index, H5T_NATIVE_UINT64, &value);
 }
 
 void set_int_attr(const std::filesystem::path& file, const std::string& object, const std::string& name,

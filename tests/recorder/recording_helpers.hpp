@@ -50,6 +50,8 @@ Scene varying_vertex_counts(std::uint64_t seed, std::uint32_t frames);
 /// Overwrites element `index` of a 1-D integer dataset.
 void overwrite_u64(const std::filesystem::path& file, const std::string& dataset, std::uint64_t index,
                    std::uint64_t value);
+/// Overwrites element `index` of a 1-D floating-point dataset.
+void overwrite_f64(const std::filesystem::path& file, const std::string& dataset, std::uint64_t index, double value);
 /// Sets (or replaces) an integer attribute of object `object` ("/" for the root).
 void set_int_attr(const std::filesystem::path& file, const std::string& object, const std::string& name,
                   std::int64_t value);

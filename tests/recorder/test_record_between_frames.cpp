@@ -114,6 +114,41 @@ TEST(RecordBetweenFrames, ABrokenOffsetAndAMissingPairAreNamed) {
     EXPECT_TRUE(named) << dropped.problems.front();
 }
 
+TEST(RecordBetweenFrames, CorruptTimesAndFlagsAreNamedNotDrawnOrCrashed) {
+    TempDir dir;
+    ASSERT_EQ(run_cli({"record", "--scene", "demo", "--frames", "17:23", "--between-frames", "-o", "r.h5", "-q"}, dir.path()).exit_code, 0);
+    std::filesystem::copy_file(dir.path() / "r.h5", dir.path() / "flags.h5");
+    // A time of contact outside [0, 1]: inspect, validate and replay name /intervals/toi.
+    testing::overwrite_f64(dir.path() / "r.h5", recorder::schema::k_interval_toi, 0, -5.0);
+    for (const std::vector<std::string>& command :
+         {std::vector<std::string>{"inspect", "r.h5"}, {"validate", "r.h5"}, {"replay", "r.h5", "-o", "out", "--contact-moments", "-q"}}) {
+        const auto result = run_cli(command, dir.path());
+        EXPECT_NE(result.exit_code, 0) << command[0];
+        EXPECT_NE(result.err.find("/intervals/toi"), std::string::npos) << command[0] << ": " << result.err;
+    }
+    // Counts that say pass-throughs where the flags hold none: a one-line error, not a crash.
+    std::uint64_t row = 0;
+    std::vector<std::uint64_t> offsets;
+    {
+        const recorder::Recording rec(dir.path() / "flags.h5");
+        for (std::uint64_t r = 1; r < rec.frames_complete() && row == 0; ++r) {
+            if (rec.interval(r, false).stats.pass_throughs > 0) row = r;
+        }
+        offsets = rec.read_u64(recorder::schema::k_interval_offsets);
+    }
+    ASSERT_GT(row, 0u);
+    for (std::uint64_t k = offsets[row]; k < offsets[row + 1]; ++k) {
+        testing::overwrite_u64(dir.path() / "flags.h5", recorder::schema::k_interval_flags, k, 0);
+    }
+    const auto inspect = run_cli({"inspect", "flags.h5"}, dir.path());
+    EXPECT_EQ(inspect.exit_code, 2) << inspect.err;
+    EXPECT_NE(inspect.err.find("/intervals/flags"), std::string::npos) << inspect.err;
+    EXPECT_EQ(std::count(inspect.err.begin(), inspect.err.end(), '\n'), 1) << inspect.err;
+    const auto validate = run_cli({"validate", "flags.h5"}, dir.path());
+    EXPECT_EQ(validate.exit_code, 1) << validate.err;
+    EXPECT_NE(validate.err.find("pass-throughs"), std::string::npos) << validate.err;
+}
+
 TEST(RecordBetweenFrames, OnlyWithTheFlagErrorsNamedAndNeverJoined) {
     TempDir dir;
     ASSERT_EQ(run_cli({"record", "--scene", "C:small", "--frames", "0:4", "-o", "plain.h5", "-q"}, dir.path()).exit_code, 0);
@@ -127,6 +162,9 @@ TEST(RecordBetweenFrames, OnlyWithTheFlagErrorsNamedAndNeverJoined) {
     EXPECT_NE(changed.err.find("scene 'D'"), std::string::npos) << changed.err;
     EXPECT_NE(changed.err.find("changes its mesh between frames 99 and 100"), std::string::npos) << changed.err;
     EXPECT_EQ(std::count(changed.err.begin(), changed.err.end(), '\n'), 1) << changed.err;
+    const auto alone = run_cli({"record", "--scene", "C:small", "--ccd-tolerance", "0.1", "-o", "n.h5"}, dir.path());
+    EXPECT_EQ(alone.exit_code, 2);
+    EXPECT_NE(alone.err.find("--between-frames"), std::string::npos) << alone.err;
     const auto negative = run_cli({"record", "--scene", "C:small", "--between-frames", "--ccd-tolerance", "-1", "-o", "n.h5"},
                                   dir.path());
     EXPECT_EQ(negative.exit_code, 2);

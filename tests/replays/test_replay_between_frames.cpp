@@ -84,6 +84,9 @@ TEST(ReplayBetweenFrames, ErrorsNameWhatIsMissing) {
     EXPECT_EQ(no_dir.exit_code, 2);
     EXPECT_NE(no_dir.err.find("--contact-moments writes PNGs"), std::string::npos) << no_dir.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "x.mp4"));
+    const testing::CliResult diff = testing::run_cli({"replay", "--diff", "run.h5", "run.h5", "-o", "d", "--contact-moments"}, dir);
+    EXPECT_EQ(diff.exit_code, 2);
+    EXPECT_NE(diff.err.find("not with --diff"), std::string::npos) << diff.err;
     if (!HasFailure()) std::filesystem::remove_all(dir);
 }
 

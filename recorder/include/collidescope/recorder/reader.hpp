@@ -91,6 +91,9 @@ public:
     /// `contacts` false, only its stats. Throws InputError without /intervals, for row 0, or
     /// on a corrupt file (naming the dataset and row).
     RecordedInterval interval(std::uint64_t row, bool contacts = true) const;
+    /// Every complete row's interval stats at once (row 0: zeros and a NaN tolerance); empty
+    /// without /intervals.
+    std::vector<IntervalStats> interval_stats() const;
     /// Number of colliding pairs per complete frame (from the offsets).
     std::vector<std::uint64_t> pair_counts() const;
     /// x y z per vertex of object `object` at row `row`; empty when --budget dropped them.

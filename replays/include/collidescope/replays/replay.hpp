@@ -14,7 +14,8 @@
 namespace collidescope::replays {
 
 /// Called after each frame is written, from the thread that wrote it, one call at a time, with
-/// the number of frames the run writes (for a progress bar).
+/// the number of images the run writes (for a progress bar: its frames, and its moments of
+/// contact with ReplayOptions::contact_moments).
 using FrameDone = std::function<void(std::uint64_t total)>;
 
 /// What a replay did.
