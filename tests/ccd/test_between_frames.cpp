@@ -224,3 +224,19 @@ TEST(BetweenFrames, EqualsTheReferenceOnRandomScenesAtOneTwoAndFourThreads) {
 
 }  // namespace
 }  // namespace collidescope
+
+namespace collidescope {
+namespace {
+
+TEST(BetweenFramesErrors, ObjectsAreNamedWhereTheIndexIsKnown) {
+    const std::vector<std::string> names = {"hand", "hip"};
+    EXPECT_EQ(with_object_names("frames 3 and 4: object 1 changes its mesh", names),
+              "frames 3 and 4: object 1 ('hip') changes its mesh");
+    EXPECT_EQ(with_object_names("object 0, object 1", names), "object 0 ('hand'), object 1 ('hip')");
+    EXPECT_EQ(with_object_names("object 7 and object x and object", names), "object 7 and object x and object");
+    EXPECT_EQ(with_object_names("object 12345678901234567890", names), "object 12345678901234567890");
+    EXPECT_EQ(with_object_names("", names), "");
+}
+
+}  // namespace
+}  // namespace collidescope

@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <regex>
 #include <string>
 
 namespace collidescope::ccd {
@@ -75,14 +74,19 @@ double interval_tolerance(const Frame& from, const Frame& to, double requested) 
 namespace collidescope {
 
 std::string with_object_names(const std::string& message, const std::vector<std::string>& names) {
-    const std::regex object(R"(object (\d+))");
+    // A plain scan, not std::regex: GCC 12's <regex> warns (maybe-uninitialized) under the
+    // sanitizers and costs the engine its compile time.
+    const std::string word = "object ";
     std::string out;
     std::size_t at = 0;
-    for (auto it = std::sregex_iterator(message.begin(), message.end(), object); it != std::sregex_iterator(); ++it) {
-        const std::size_t index = std::stoul((*it)[1]);
-        out += message.substr(at, static_cast<std::size_t>(it->position()) - at) + it->str();
+    for (std::size_t found = message.find(word); found != std::string::npos; found = message.find(word, at)) {
+        std::size_t end = found + word.size();
+        while (end < message.size() && message[end] >= '0' && message[end] <= '9') ++end;
+        out += message.substr(at, end - at);
+        at = end;
+        if (end == found + word.size() || end - found - word.size() > 9) continue;  // no index, or far too long for one
+        const std::size_t index = std::stoul(message.substr(found + word.size(), end - found - word.size()));
         if (index < names.size()) out += " ('" + names[index] + "')";
-        at = static_cast<std::size_t>(it->position() + it->length());
     }
     return out + message.substr(at);
 }
