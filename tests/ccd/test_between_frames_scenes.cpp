@@ -80,14 +80,18 @@ TEST(BetweenFramesScenes, DenseCoplanarContactMatchesTheReference) {
 }
 
 // The dancer's parts against each other (with self-collision the reference's interval
-// bisection spends minutes on the neighbouring triangles of each part).
+// bisection spends minutes on the neighbouring triangles of each part), over intervals 43 and
+// 44, where parts pass through each other between frames (7 pass-throughs in each, every one
+// seen touching at a sampled time by the exact per-frame test). Intervals 40 and 41 once held
+// pass-throughs that were only the query budget spent on seam triangles some 2 to 3 δ apart;
+// the solver now proves those apart.
 TEST(BetweenFramesScenes, AnAnimatedCharacterMatchesTheReference) {
     REQUIRE_TESTMODEL(dancer, "X/BCN_Epileptic.X");
     AnimationOptions animation;
     animation.fps = 30;
     const std::string input = dancer.string();
     const Scene scene = open_inputs(std::span(&input, 1), animation);
-    EXPECT_GT(compare_with_reference(scene, false, 40, 2, "BCN_Epileptic"), 0);
+    EXPECT_GT(compare_with_reference(scene, false, 43, 2, "BCN_Epileptic"), 0);
 }
 
 }  // namespace

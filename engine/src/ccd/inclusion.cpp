@@ -1,4 +1,5 @@
-// Inclusion-based root finding (after Wang et al. 2021, "Tight-Inclusion"): boxes of
+// Inclusion-based root finding (after Wang et al. 2021, "Tight-Inclusion"): the times first,
+// from the coplanarity cubic (solve), then boxes of
 // (t, u, v) in order of their earliest time, each excluded when some coordinate of F is
 // certainly non-zero over it, accepted when every coordinate's inclusion is within δ of 0,
 // else split along the parameter that moves F the most.
@@ -28,16 +29,9 @@ namespace {
 // F(t, u, v) = X(t) + u Y(t) + v Z(t) with X(t) = x0 + t dx (and so on), per axis.
 struct Function {
     Vec3 x0, dx, y0, dy, z0, dz;
-    Vec3 x1, y1, z1;  ///< X, Y and Z at t = 1, as differences of the inputs (the coplanarity filter's)
-    Vec3 error;  ///< per axis: the bound on a corner value's rounding error
-    /// A fixed direction n (Y x Z halfway through the interval: the face's normal, or the
-    /// normal of both edges) along which n . F, multilinear too, also excludes boxes: where n
-    /// is the normal of the plane where contact happens, a box of times before contact is
-    /// excluded by it whatever its u and v, so the search descends in time without halving u
-    /// and v (which axis-aligned coordinates mixing normal and tangent parts would need).
-    /// Zero when Y and Z are parallel halfway.
-    Vec3 normal = Vec3::Zero();
-    double normal_error = 0;  ///< the bound on n . F's rounding: 2 sum |n_k| error_k
+    Vec3 x1, y1, z1;  ///< X, Y and Z at t = 1, as differences of the inputs (the coplanarity cubic's)
+    Vec3 error;       ///< per axis: the bound on a value's rounding error, for t, u, v in [0, 1]
+    double largest = 0;  ///< the largest input coordinate's magnitude, every axis
 };
 
 Function make_function(const Path& x_from, const Path& x_to, const Path& y_from, const Path& y_to, const Path& z_from,
@@ -57,14 +51,7 @@ Function make_function(const Path& x_from, const Path& x_to, const Path& y_from,
     f.y1 = y1;
     f.z1 = z1;
     f.error = magnitude * magnitude_scale + Vec3::Constant(64 * std::numeric_limits<double>::denorm_min());
-    const Vec3 normal = (f.y0 + 0.5 * f.dy).cross(f.z0 + 0.5 * f.dz);
-    const double largest = normal.cwiseAbs().maxCoeff();
-    if (largest > 0 && std::isfinite(largest)) {
-        f.normal = normal / largest;
-        // n . F from the axes' values (each within error_k): sum |n_k| error_k, plus the dot
-        // product's own rounding, far less than that again (|F_k| <= 6 M_k, error_k = 512 M_k u).
-        f.normal_error = 2 * f.normal.cwiseAbs().dot(f.error);
-    }
+    f.largest = magnitude.maxCoeff();
     return f;
 }
 
@@ -74,50 +61,113 @@ Vec3 largest_magnitude(std::initializer_list<const Path*> paths) {
     return m;
 }
 
+/// Fixed directions d along which d . F, multilinear too, also excludes boxes (F = 0 makes
+/// every d . F = 0): n = Y x Z at the middle of a span of times (the face's normal, or the
+/// normal of both edges), n x Z and n x Y. Near the time of contact n . F is the distance to
+/// the contact plane whatever u and v are, and the other two are, within the plane, the
+/// distances across the lines u = const and v = const: with the axes alone (which mix the
+/// three) a box is excluded only once u and v are halved down to the features' gap.
+/// Each d is scaled to a largest component of 1; d . F from the axes' values (each within
+/// error_k) is within sum |d_k| error_k, plus the dot product's own rounding, far less than
+/// that again (|F_k| <= 6 M_k, error_k = 512 M_k u): the bound used is twice the sum.
+struct Directions {
+    std::array<Vec3, 3> d{};
+    std::array<double, 3> error{};
+    int count = 0;
+};
+
+Directions directions_at(const Function& f, double t) {
+    Directions out;
+    const Vec3 y = f.y0 + t * f.dy, z = f.z0 + t * f.dz;
+    const Vec3 n = y.cross(z);
+    for (const Vec3& d : {n, n.cross(z), n.cross(y)}) {
+        const double largest = d.cwiseAbs().maxCoeff();
+        if (!(largest > 0 && std::isfinite(largest))) continue;  // Y and Z parallel: the axes alone
+        out.d[out.count] = d / largest;
+        out.error[out.count] = 2 * out.d[out.count].cwiseAbs().dot(f.error);
+        ++out.count;
+    }
+    return out;
+}
+
 struct Box {
     double t0, t1, u0, u1, v0, v1;
     std::uint32_t level = 0;  ///< halvings from the whole domain
 };
 
-// Whether X(t), Y(t) and Z(t) can be linearly dependent for some t in [0, 1], which a zero of
-// F needs (X = -uY - vZ): their determinant is a cubic in t, and when its four Bernstein
-// coefficients on [0, 1] share a strict sign, so does the cubic (it is their weighted mean).
-// Each determinant is of differences of input coordinates (at most 2M in size, 2Mu off); the
-// coefficients are within 480 M^3 u of exact (six products of three, five sums), bounded here
-// by 4096 M^3 u.
-bool may_be_coplanar(const Function& f, double largest) {
-    const Vec3 x[2] = {f.x0, f.x1}, y[2] = {f.y0, f.y1}, z[2] = {f.z0, f.z1};
-    const auto det = [&](int i, int j, int k) { return x[i].dot(y[j].cross(z[k])); };
-    const double b[4] = {det(0, 0, 0), (det(1, 0, 0) + det(0, 1, 0) + det(0, 0, 1)) / 3,
-                         (det(0, 1, 1) + det(1, 0, 1) + det(1, 1, 0)) / 3, det(1, 1, 1)};
-    const double error = 4096 * largest * largest * largest * 0x1p-53 + 64 * std::numeric_limits<double>::denorm_min();
-    const bool positive = b[0] > error && b[1] > error && b[2] > error && b[3] > error;
-    const bool negative = b[0] < -error && b[1] < -error && b[2] < -error && b[3] < -error;
-    return !positive && !negative;
+// Whether F(box.t0, u, v) is within δ of 0 at one (u, v) of the box and the domain: the
+// least-squares zero of the affine F(t0, ., .), clamped into them. The value is computed as a
+// corner's is (the same rounding bound holds for any u, v in [0, 1]), and u + v < 1 is
+// decided exactly (a rounded sum below 1 is an exact sum below 1). A witness that no earlier
+// box can beat: box.t0 is then the query's toi, as with an accepted box.
+bool witness(const Function& f, bool simplex, const Box& box, double tolerance) {
+    const Vec3 x = f.x0 + box.t0 * f.dx, y = f.y0 + box.t0 * f.dy, z = f.z0 + box.t0 * f.dz;
+    const double yy = y.dot(y), yz = y.dot(z), zz = z.dot(z), xy = x.dot(y), xz = x.dot(z);
+    const double det = yy * zz - yz * yz;
+    double u = 0.5 * (box.u0 + box.u1), v = 0.5 * (box.v0 + box.v1);
+    if (det > 0 && std::isfinite(det)) {
+        u = (yz * xz - zz * xy) / det;
+        v = (yz * xy - yy * xz) / det;
+    }
+    if (!std::isfinite(u) || !std::isfinite(v)) return false;
+    u = std::clamp(u, box.u0, box.u1);
+    v = std::clamp(v, box.v0, box.v1);
+    if (simplex && !(u + v < 1)) {
+        const double scale = (1 - 0x1p-40) / (u + v);
+        u = std::max(box.u0, u * scale);
+        v = std::max(box.v0, v * scale);
+        if (!(u + v < 1)) return false;
+    }
+    for (int k = 0; k < 3; ++k) {
+        const double w = (x[k] + u * y[k]) + v * z[k];
+        if (!(std::abs(w) + f.error[k] <= tolerance)) return false;
+    }
+    return true;
 }
 
-// The solver. `simplex`: the domain is u + v <= 1 (vertex-face), else the unit square.
-QueryResult solve(const Function& f, bool simplex, const QueryConfig& config) {
-    QueryResult result;
+// Whether some axis of F is certainly non-zero over [ta, tb] x [0, 1]^2: the features apart
+// along it for the whole span (their positions' ranges do not meet), the common case that a
+// single box settles before the times are halved.
+bool apart(const Function& f, double ta, double tb) {
+    for (int k = 0; k < 3; ++k) {
+        const double x[2] = {f.x0[k] + ta * f.dx[k], f.x0[k] + tb * f.dx[k]};
+        const double y[2] = {f.y0[k] + ta * f.dy[k], f.y0[k] + tb * f.dy[k]};
+        const double z[2] = {f.z0[k] + ta * f.dz[k], f.z0[k] + tb * f.dz[k]};
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        for (int corner = 0; corner < 8; ++corner) {
+            const int t = corner & 1;
+            const double w = (x[t] + (corner & 2 ? y[t] : 0.0)) + (corner & 4 ? z[t] : 0.0);
+            lo = std::min(lo, w);
+            hi = std::max(hi, w);
+        }
+        if (lo > f.error[k] || hi < -f.error[k]) return true;
+    }
+    return false;
+}
+
+// The boxes of [ta, tb] x the domain, earliest first; result.boxes counts over every span (the
+// budget is the query's). Returns true once the query is decided: a contact (result set).
+bool solve_span(const Function& f, bool simplex, const QueryConfig& config, double ta, double tb, QueryResult& result) {
+    const Directions dirs = directions_at(f, 0.5 * (ta + tb));
     thread_local std::vector<Box> heap;
     heap.clear();
     // A min-heap on t0, the deeper box first among equal times (ties are common: u and v
     // halves share their t0), so a contact set wider than a point is descended into, not
     // spread over breadth-first.
     const auto later = [](const Box& a, const Box& b) { return a.t0 > b.t0 || (a.t0 == b.t0 && a.level < b.level); };
-    heap.push_back({0, 1, 0, 1, 0, 1, 0});
+    heap.push_back({ta, tb, 0, 1, 0, 1, 0});
     while (!heap.empty()) {
         std::pop_heap(heap.begin(), heap.end(), later);
         const Box box = heap.back();
         heap.pop_back();
-        if (box.t0 > config.t_max) break;  // every box left is later still
+        if (box.t0 > config.t_max) return false;  // every box left is later still
         if (simplex && box.u0 + box.v0 > 1) continue;
         if (++result.boxes > config.max_boxes) {
             // Give up conservatively: the earliest time not excluded (this box is the earliest).
             result.hit = true;
             result.toi = box.t0;
             result.resolved = false;
-            return result;
+            return true;
         }
         // The eight corners, index bits: 1 t, 2 u, 4 v; one axis at a time, stopping at the
         // first axis that excludes the box.
@@ -140,22 +190,23 @@ QueryResult solve(const Function& f, bool simplex, const QueryConfig& config) {
             excluded = lo > f.error[k] || hi < -f.error[k];
             within = within && hi - lo + 2 * f.error[k] <= config.tolerance;
         }
-        if (!excluded && f.normal_error > 0) {
+        for (int i = 0; i < dirs.count && !excluded; ++i) {
+            const Vec3& d = dirs.d[i];
             double lo = std::numeric_limits<double>::infinity(), hi = -lo;
             for (int corner = 0; corner < 8; ++corner) {
-                const double w = f.normal[0] * value[0][corner] + f.normal[1] * value[1][corner] + f.normal[2] * value[2][corner];
+                const double w = d[0] * value[0][corner] + d[1] * value[1][corner] + d[2] * value[2][corner];
                 lo = std::min(lo, w);
                 hi = std::max(hi, w);
             }
-            excluded = lo > f.normal_error || hi < -f.normal_error;
+            excluded = lo > dirs.error[i] || hi < -dirs.error[i];
         }
         if (excluded) continue;
-        if (within) {
-            // Every value over the box is within δ of 0, the box's earliest corner (t0, u0,
-            // v0) is in the domain, and no earlier box holds a zero.
+        if (within || witness(f, simplex, box, config.tolerance)) {
+            // Every value over the box is within δ of 0 (its earliest corner (t0, u0, v0) is in
+            // the domain), or one value at t0 is; no earlier box holds a zero.
             result.hit = true;
             result.toi = box.t0;
-            return result;
+            return true;
         }
         // Split the parameter along which F changes most over the box.
         std::array<double, 3> change{0, 0, 0};
@@ -179,7 +230,7 @@ QueryResult solve(const Function& f, bool simplex, const QueryConfig& config) {
             result.hit = true;
             result.toi = box.t0;
             result.resolved = false;
-            return result;
+            return true;
         }
         Box low = box, high = box;
         low.level = high.level = box.level + 1;
@@ -192,6 +243,80 @@ QueryResult solve(const Function& f, bool simplex, const QueryConfig& config) {
         heap.push_back(high);
         std::push_heap(heap.begin(), heap.end(), later);
     }
+    return false;
+}
+
+// The determinant of X(t), Y(t) and Z(t) (each given at t = 0 and t = 1), a cubic in t: its
+// four Bernstein coefficients on [0, 1], averages of determinants of the end vectors.
+// `cross` holds y[j] x z[k] at index 2j + k (shared by every x against one pair y, z).
+std::array<double, 4> coplanarity(const Path& x, const std::array<Vec3, 4>& cross) {
+    const auto det = [&](int i, int j, int k) { return x[i].dot(cross[2 * j + k]); };
+    return {det(0, 0, 0), (det(1, 0, 0) + det(0, 1, 0) + det(0, 0, 1)) / 3, (det(0, 1, 1) + det(1, 0, 1) + det(1, 1, 0)) / 3,
+            det(1, 1, 1)};
+}
+
+std::array<Vec3, 4> crosses(const Path& y, const Path& z) {
+    return {y[0].cross(z[0]), y[0].cross(z[1]), y[1].cross(z[0]), y[1].cross(z[1])};
+}
+
+// The bound on those coefficients' rounding where X, Y and Z are differences of input
+// coordinates of magnitude at most `largest` (see solve).
+double coplanarity_error(double largest) {
+    return 4096 * largest * largest * largest * 0x1p-53 + 64 * std::numeric_limits<double>::denorm_min();
+}
+
+// The solver. `simplex`: the domain is u + v <= 1 (vertex-face), else the unit square.
+//
+// First the times: F = 0 needs X(t), Y(t) and Z(t) linearly dependent (X = -uY - vZ), so
+// their determinant D(t), a cubic, must vanish. Its Bernstein coefficients on [0, 1] are
+// averages of determinants of the inputs' differences (each at most 2M in size, 2Mu off):
+// within 480 M^3 u of exact (six products of three, five sums), bounded here by 4096 M^3 u.
+// Spans of time are halved earliest first by de Casteljau's rule (each coefficient of a half
+// an average of the whole's: the exact ones are the same averages of the exact ones, and each
+// halving adds at most 3u times the largest coefficient; with at most 60 halvings, 512u times
+// it covers them); a span whose coefficients all lie beyond the bound on one side holds no
+// zero of D and no contact. A span goes to the boxes once it is narrow enough that F moves by
+// at most δ/4 across it (so at its start a contact within it is within δ/4: a witness finds
+// it at once), or once D is flat on it (every coefficient within four bounds of 0: moving in
+// one plane, or nearly; halving it further would not exclude anything).
+QueryResult solve(const Function& f, bool simplex, const QueryConfig& config) {
+    QueryResult result;
+    const std::array<double, 4> whole = coplanarity({f.x0, f.x1}, crosses({f.y0, f.y1}, {f.z0, f.z1}));
+    double size = 0;
+    for (const double c : whole) size = std::max(size, std::abs(c));
+    if (!std::isfinite(size)) return solve_span(f, simplex, config, 0, 1, result), result;
+    const double error = coplanarity_error(f.largest) + 0x1p-44 * size;
+    const double speed = (f.dx.cwiseAbs() + f.dy.cwiseAbs() + f.dz.cwiseAbs()).maxCoeff();
+    const double width = speed > 0 ? config.tolerance / (4 * speed) : 1;
+    struct Span {
+        double a, b;
+        std::array<double, 4> c;
+        int depth;
+    };
+    thread_local std::vector<Span> stack;
+    stack.clear();
+    stack.push_back({0, 1, whole, 0});
+    while (!stack.empty()) {
+        const Span s = stack.back();
+        stack.pop_back();
+        if (s.a > config.t_max) break;  // the stack holds spans in time order: the rest is later
+        const auto beyond = [&](double sign) {
+            return sign * s.c[0] > error && sign * s.c[1] > error && sign * s.c[2] > error && sign * s.c[3] > error;
+        };
+        if (beyond(1) || beyond(-1)) continue;
+        if (s.depth % 4 == 0 && apart(f, s.a, s.b)) continue;
+        bool flat = true;
+        for (const double c : s.c) flat = flat && std::abs(c) <= 4 * error;
+        const double middle = 0.5 * (s.a + s.b);
+        if (flat || s.b - s.a <= width || s.depth >= 60 || !(s.a < middle && middle < s.b)) {
+            if (solve_span(f, simplex, config, s.a, s.b, result)) return result;
+            continue;
+        }
+        const double l1 = 0.5 * (s.c[0] + s.c[1]), m = 0.5 * (s.c[1] + s.c[2]), r2 = 0.5 * (s.c[2] + s.c[3]);
+        const double l2 = 0.5 * (l1 + m), r1 = 0.5 * (m + r2), mid = 0.5 * (l2 + r1);
+        stack.push_back({middle, s.b, {mid, r1, r2, s.c[3]}, s.depth + 1});
+        stack.push_back({s.a, middle, {s.c[0], l1, l2, mid}, s.depth + 1});
+    }
     return result;
 }
 
@@ -199,20 +324,32 @@ constexpr double k_error_scale = 512 * 0x1p-53;
 
 }  // namespace
 
+MovingPlane::MovingPlane(const Path& a, const Path& b, const Path& c, double largest)
+    : m_origin(a),
+      m_crosses(crosses({b[0] - a[0], b[1] - a[1]}, {c[0] - a[0], c[1] - a[1]})),
+      m_error(coplanarity_error(largest)) {}
+
+int MovingPlane::side(const Path& p) const {
+    const std::array<double, 4> coefficients = coplanarity({p[0] - m_origin[0], p[1] - m_origin[1]}, m_crosses);
+    const auto beyond = [&](double sign) {
+        for (const double k : coefficients) {
+            if (!(sign * k > m_error)) return false;
+        }
+        return true;
+    };
+    return beyond(1) ? 1 : beyond(-1) ? -1 : 0;
+}
+
 QueryResult vertex_face(const Path& p, const Path& a, const Path& b, const Path& c, const QueryConfig& config) {
     // F = (p - a) + u (a - b) + v (a - c).
     const Vec3 magnitude = largest_magnitude({&p, &a, &b, &c});
-    const Function f = make_function(p, a, a, b, a, c, k_error_scale, magnitude);
-    if (!may_be_coplanar(f, magnitude.maxCoeff())) return {};
-    return solve(f, true, config);
+    return solve(make_function(p, a, a, b, a, c, k_error_scale, magnitude), true, config);
 }
 
 QueryResult edge_edge(const Path& p0, const Path& p1, const Path& q0, const Path& q1, const QueryConfig& config) {
     // F = (p0 - q0) + u (p1 - p0) + v (q0 - q1).
     const Vec3 magnitude = largest_magnitude({&p0, &p1, &q0, &q1});
-    const Function f = make_function(p0, q0, p1, p0, q0, q1, k_error_scale, magnitude);
-    if (!may_be_coplanar(f, magnitude.maxCoeff())) return {};
-    return solve(f, false, config);
+    return solve(make_function(p0, q0, p1, p0, q0, q1, k_error_scale, magnitude), false, config);
 }
 
 }  // namespace collidescope::ccd

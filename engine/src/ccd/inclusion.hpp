@@ -36,6 +36,24 @@ struct QueryResult {
     std::uint32_t boxes = 0;     ///< boxes evaluated
 };
 
+/// The moving plane of a triangle (a, b, c), to tell which side of it moving points stay on.
+class MovingPlane {
+public:
+    /// `largest`: at least the magnitude of every coordinate of the triangle's paths and of
+    /// every point's that side() is asked about.
+    MovingPlane(const Path& a, const Path& b, const Path& c, double largest);
+
+    /// 1 or -1 when the signed volume det(p - a, b - a, c - a) is certainly of that sign at
+    /// every time of the interval (decided from the Bernstein coefficients of that cubic,
+    /// beyond their rounding bound), 0 when it may vanish.
+    int side(const Path& p) const;
+
+private:
+    Path m_origin;
+    std::array<Vec3, 4> m_crosses;  ///< (b - a) x (c - a) over both ends' combinations
+    double m_error;
+};
+
 /// Vertex p against the triangle (a, b, c).
 QueryResult vertex_face(const Path& p, const Path& a, const Path& b, const Path& c, const QueryConfig& config);
 

@@ -69,11 +69,35 @@ bool coplanar_motion(const PairMotion& m) {
     return false;  // all on a line or a point: the general queries decide
 }
 
+// Whether the corners of `points` (those not shared with `face`, for self: the shared ones lie
+// in its plane) stay strictly on one side of the moving plane of `face` throughout the
+// interval. Then the triangle of `points` meets the other's plane only within the hull of the
+// shared corners (nowhere, when none is shared) at every time: no contact, or only one that
+// the self rule does not count, and none of the queries needs to run. A face that degenerates
+// to a line at some time has no side there: its signed volumes vanish, and nothing is skipped.
+bool separated(const std::array<Path, 3>& points, const TriIndices& point_ids, const std::array<Path, 3>& face,
+               const TriIndices& face_ids, bool self, double largest) {
+    const MovingPlane plane(face[0], face[1], face[2], largest);
+    int side = 0;
+    for (int i = 0; i < 3; ++i) {
+        if (self && shares(face_ids, point_ids[i])) continue;
+        const int s = plane.side(points[i]);
+        if (s == 0 || (side != 0 && s != side)) return false;
+        side = s;
+    }
+    return side != 0;
+}
+
 }  // namespace
 
 PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_boxes) {
     PairOutcome out;
     if (m.self && std::is_permutation(m.ia.begin(), m.ia.end(), m.ib.begin())) return out;  // the same triangle
+    double largest = 0;
+    for (int i = 0; i < 3; ++i) {
+        for (int end = 0; end < 2; ++end) largest = std::max({largest, m.a[i][end].cwiseAbs().maxCoeff(), m.b[i][end].cwiseAbs().maxCoeff()});
+    }
+    if (separated(m.b, m.ib, m.a, m.ia, m.self, largest) || separated(m.a, m.ia, m.b, m.ib, m.self, largest)) return out;
     if (touching(m, 0)) {
         out.contact = out.start_contact = true;
         out.toi = 0;
