@@ -3,7 +3,7 @@
 // then cubic root finding per vertex-face and edge-edge query (peers/ccd_root_finding.hpp).
 //
 //   build-peer/bench/bench_ccd_peers --scene NAME[:PRESET] --method ours|peer [--threads 2]
-//       [--self | --no-self] [--frames N] [--pairs FILE]
+//       [--self | --no-self] [--frames N] [--pairs FILE] [--peer-build low|refit]
 //
 // Runs one side over every interval k -> k+1 of the scene's first N frames (all without
 // --frames), timing only the detection: ours BetweenFrames::detect (its swept trees are kept
@@ -62,6 +62,7 @@ struct Options {
     std::uint32_t frames = 0;         // 0: all
     std::string pairs_file;
     std::string compare_ours, compare_peer;
+    bool peer_rebuild = true;  // --peer-build low (default) or refit
 };
 
 Options parse(int argc, char** argv) {
@@ -79,6 +80,11 @@ Options parse(int argc, char** argv) {
         else if (arg == "--no-self") options.self = false;
         else if (arg == "--frames") options.frames = static_cast<std::uint32_t>(std::stoul(value()));
         else if (arg == "--pairs") options.pairs_file = value();
+        else if (arg == "--peer-build") {
+            const std::string build = value();
+            if (build != "low" && build != "refit") throw std::invalid_argument("--peer-build low|refit");
+            options.peer_rebuild = build == "low";
+        }
         else if (arg == "--compare") {
             options.compare_ours = value();
             options.compare_peer = value();
@@ -224,8 +230,8 @@ SideTotals run_ours(SceneRun& run, PairsWriter& writer) {
     return totals;
 }
 
-SideTotals run_peer(SceneRun& run, int threads, PairsWriter& writer) {
-    CcdPeer peer(run.self, threads);
+SideTotals run_peer(SceneRun& run, int threads, bool rebuild, PairsWriter& writer) {
+    CcdPeer peer(run.self, threads, rebuild);
     SideTotals totals;
     for_each_interval(run, [&](const Frame& from, const Frame& to) {
         CcdPeerStats stats;
@@ -247,7 +253,7 @@ int run_side(const Options& options) {
     const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(options.threads));
     PairsWriter writer(options.pairs_file);
     const bool ours = options.method == "ours";
-    const SideTotals t = ours ? run_ours(run, writer) : run_peer(run, options.threads, writer);
+    const SideTotals t = ours ? run_ours(run, writer) : run_peer(run, options.threads, options.peer_rebuild, writer);
     std::size_t triangles = 0;
     for (std::uint32_t o = 0; o < run.scene.source->object_count(); ++o) {
         triangles += run.scene.source->frame(0).objects[o].triangle_count();
@@ -256,7 +262,7 @@ int run_side(const Options& options) {
                 "\"intervals\": %u, \"total_ms\": %.3f, \"%s\": %.3f, \"collide_ms\": %.3f, \"narrow_ms\": %.3f, "
                 "\"candidates\": %llu, \"pairs\": %llu, \"pass_throughs\": %llu, \"unresolved\": %llu, \"digest\": \"%016llx\"}\n",
                 run.name.c_str(), options.method.c_str(), run.self ? "true" : "false", options.threads, triangles, t.intervals,
-                t.total_ms, ours ? "swept_trees_ms" : "refit_ms", t.broad_ms, t.collide_ms, t.narrow_ms,
+                t.total_ms, ours ? "swept_trees_ms" : options.peer_rebuild ? "rebuild_ms" : "refit_ms", t.broad_ms, t.collide_ms, t.narrow_ms,
                 static_cast<unsigned long long>(t.candidates), static_cast<unsigned long long>(t.pairs),
                 static_cast<unsigned long long>(t.pass_throughs), static_cast<unsigned long long>(t.unresolved),
                 static_cast<unsigned long long>(t.digest.hash));

@@ -40,8 +40,9 @@ CcdMotion motion(const Frame& from, const Frame& to, const TrianglePair& pair) {
 
 }  // namespace
 
-CcdPeer::CcdPeer(bool self_collision, int threads)
+CcdPeer::CcdPeer(bool self_collision, int threads, bool rebuild)
     : m_self(self_collision),
+      m_rebuild(rebuild),
       m_device(rtcNewDevice(threads > 0 ? ("threads=" + std::to_string(threads)).c_str() : nullptr)) {}
 
 CcdPeer::~CcdPeer() {
@@ -142,12 +143,13 @@ void CcdPeer::create(const Frame& frame) {
     for (std::size_t o = 0; o < frame.objects.size(); ++o) {
         SweptObject& object = m_objects[o];
         object.scene = rtcNewScene(m_device);
-        rtcSetSceneFlags(object.scene, RTC_SCENE_FLAG_DYNAMIC);  // needed for a real refit
+        if (m_rebuild) rtcSetSceneBuildQuality(object.scene, RTC_BUILD_QUALITY_LOW);
+        else rtcSetSceneFlags(object.scene, RTC_SCENE_FLAG_DYNAMIC);  // needed for a real refit
         object.geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_USER);
         rtcSetGeometryUserPrimitiveCount(object.geometry, static_cast<unsigned>(frame.objects[o].triangle_count()));
         rtcSetGeometryUserData(object.geometry, &object);
         rtcSetGeometryBoundsFunction(object.geometry, &CcdPeer::swept_bounds, nullptr);
-        rtcSetGeometryBuildQuality(object.geometry, RTC_BUILD_QUALITY_REFIT);
+        rtcSetGeometryBuildQuality(object.geometry, m_rebuild ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_REFIT);
         rtcAttachGeometry(object.scene, object.geometry);
         rtcReleaseGeometry(object.geometry);
     }

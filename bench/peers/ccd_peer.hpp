@@ -2,9 +2,10 @@
 // The CCD peer (bench/peers, issue 39 point 4): continuous detection built the way the
 // literature's CPU codes are. Broad phase: per object an Embree 3 scene of user geometry whose
 // primitive bounds are each triangle's swept box (the box of its three corners at both ends,
-// which holds the triangle throughout the linear motion), refit every interval
-// (RTC_BUILD_QUALITY_REFIT on a dynamic scene, as the per-frame peer, embree_peer.hpp), built
-// again when the topology changes; rtcCollide of every object pair whose scene bounds meet,
+// which holds the triangle throughout the linear motion), built anew every interval at
+// RTC_BUILD_QUALITY_LOW (by default: on A it takes 1.1 s over the run where a refit of a
+// dynamic scene, RTC_BUILD_QUALITY_REFIT as the per-frame peer embree_peer.hpp, takes 3.4 s;
+// `rebuild = false` keeps the refit); rtcCollide of every object pair whose scene bounds meet,
 // and of each object with itself under self-collision. Narrow phase: ccd_root_finding.hpp on
 // every candidate, on TBB's threads. The threads: Embree's device gets `threads=T` (as the
 // per-frame peer); the narrow phase runs under the caller's tbb::global_control.
@@ -31,7 +32,9 @@ struct CcdPeerStats {
 class CcdPeer {
 public:
     /// `threads` > 0: Embree's device runs on that many threads; 0: all hardware threads.
-    CcdPeer(bool self_collision, int threads);
+    /// `rebuild`: each interval's trees built anew at RTC_BUILD_QUALITY_LOW (the faster on
+    /// the built-in scenes); else a dynamic scene refit (RTC_BUILD_QUALITY_REFIT).
+    CcdPeer(bool self_collision, int threads, bool rebuild = true);
     ~CcdPeer();
     CcdPeer(const CcdPeer&) = delete;
     CcdPeer& operator=(const CcdPeer&) = delete;
@@ -57,6 +60,7 @@ private:
     void release();
 
     bool m_self;
+    bool m_rebuild;
     RTCDevice m_device;
     std::vector<SweptObject> m_objects;  // sized once per topology: Embree holds pointers into it
     std::vector<std::uint64_t> m_revisions;
