@@ -21,6 +21,7 @@
 #include <cfloat>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace collidescope::ccd {
@@ -125,21 +126,33 @@ bool witness(const Function& f, bool simplex, const Box& box, double tolerance) 
     return true;
 }
 
+// Axis k of F at the box's eight corners (index bits: 1 t, 2 u, 4 v) into `values`; returns
+// the least and the greatest.
+std::pair<double, double> corner_values(const Function& f, int k, const Box& box, double* values) {
+    const double x[2] = {f.x0[k] + box.t0 * f.dx[k], f.x0[k] + box.t1 * f.dx[k]};
+    const double y[2] = {f.y0[k] + box.t0 * f.dy[k], f.y0[k] + box.t1 * f.dy[k]};
+    const double z[2] = {f.z0[k] + box.t0 * f.dz[k], f.z0[k] + box.t1 * f.dz[k]};
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (int corner = 0; corner < 8; ++corner) {
+        const int t = corner & 1;
+        const double u = corner & 2 ? box.u1 : box.u0;
+        const double v = corner & 4 ? box.v1 : box.v0;
+        const double w = (x[t] + u * y[t]) + v * z[t];
+        values[corner] = w;
+        lo = std::min(lo, w);
+        hi = std::max(hi, w);
+    }
+    return {lo, hi};
+}
+
 // Whether some axis of F is certainly non-zero over [ta, tb] x [0, 1]^2: the features apart
 // along it for the whole span (their positions' ranges do not meet), the common case that a
 // single box settles before the times are halved.
 bool apart(const Function& f, double ta, double tb) {
+    const Box whole{ta, tb, 0, 1, 0, 1};
+    double values[8];
     for (int k = 0; k < 3; ++k) {
-        const double x[2] = {f.x0[k] + ta * f.dx[k], f.x0[k] + tb * f.dx[k]};
-        const double y[2] = {f.y0[k] + ta * f.dy[k], f.y0[k] + tb * f.dy[k]};
-        const double z[2] = {f.z0[k] + ta * f.dz[k], f.z0[k] + tb * f.dz[k]};
-        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-        for (int corner = 0; corner < 8; ++corner) {
-            const int t = corner & 1;
-            const double w = (x[t] + (corner & 2 ? y[t] : 0.0)) + (corner & 4 ? z[t] : 0.0);
-            lo = std::min(lo, w);
-            hi = std::max(hi, w);
-        }
+        const auto [lo, hi] = corner_values(f, k, whole, values);
         if (lo > f.error[k] || hi < -f.error[k]) return true;
     }
     return false;
@@ -174,19 +187,7 @@ bool solve_span(const Function& f, bool simplex, const QueryConfig& config, doub
         double value[3][8];
         bool excluded = false, within = true;
         for (int k = 0; k < 3 && !excluded; ++k) {
-            const double x[2] = {f.x0[k] + box.t0 * f.dx[k], f.x0[k] + box.t1 * f.dx[k]};
-            const double y[2] = {f.y0[k] + box.t0 * f.dy[k], f.y0[k] + box.t1 * f.dy[k]};
-            const double z[2] = {f.z0[k] + box.t0 * f.dz[k], f.z0[k] + box.t1 * f.dz[k]};
-            double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-            for (int corner = 0; corner < 8; ++corner) {
-                const int t = corner & 1;
-                const double u = corner & 2 ? box.u1 : box.u0;
-                const double v = corner & 4 ? box.v1 : box.v0;
-                const double w = (x[t] + u * y[t]) + v * z[t];
-                value[k][corner] = w;
-                lo = std::min(lo, w);
-                hi = std::max(hi, w);
-            }
+            const auto [lo, hi] = corner_values(f, k, box, value[k]);
             excluded = lo > f.error[k] || hi < -f.error[k];
             within = within && hi - lo + 2 * f.error[k] <= config.tolerance;
         }
