@@ -32,6 +32,7 @@ struct Graph {
 Graph build_graph(std::span<const Piece> pieces, std::span<const std::uint32_t> indices) {
     Graph graph;
     struct Entry {
+        std::uint64_t hash;
         EndKey key;
         std::uint32_t segment, end;
     };
@@ -41,10 +42,11 @@ Graph build_graph(std::span<const Piece> pieces, std::span<const std::uint32_t> 
         if (piece.kind != PairIntersection::Kind::Segment) continue;
         const auto segment = static_cast<std::uint32_t>(graph.segments.size());
         graph.segments.push_back(&piece);
-        for (std::uint32_t end = 0; end < 2; ++end) entries.push_back({piece.keys[end], segment, end});
+        for (std::uint32_t end = 0; end < 2; ++end) entries.push_back({key_hash(piece.keys[end]), piece.keys[end], segment, end});
     }
+    // Equal keys together (by hash first: the fields' comparison was most of the time here).
     std::sort(entries.begin(), entries.end(),
-              [](const Entry& x, const Entry& y) { return x.key < y.key; });
+              [](const Entry& x, const Entry& y) { return x.hash != y.hash ? x.hash < y.hash : x.key < y.key; });
     graph.nodes_of.resize(graph.segments.size());
     graph.ends.reserve(entries.size());
     for (std::size_t i = 0; i < entries.size(); ++i) {

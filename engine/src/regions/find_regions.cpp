@@ -1,6 +1,6 @@
-// A frame's regions: every pair's intersection (in parallel), the pairs joined into regions by
-// the vertices their triangles share (a union-find), then each
-// region's counts, box and curves (in parallel over regions).
+// A frame's regions: the pairs joined into regions by the vertices their triangles share (a
+// union-find), then each region's intersections, counts, box and curves (in parallel over
+// regions, and over the pairs of a large region).
 
 #include "curves.hpp"
 #include "pair_intersection.hpp"
@@ -9,6 +9,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <numeric>
@@ -40,22 +41,43 @@ std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::spa
         // A stable counting sort by object pair (the pipeline sorts by first object and
         // triangle, so the second objects interleave; a frame has few object pairs).
         order = sized(order_kept);
+        // A slot per object pair, looked up in a table of every (a, b) where the objects are few.
         std::vector<std::pair<std::uint64_t, std::uint32_t>> counts;  // (object pair, pairs), by object pair
+        const std::size_t n = frame.objects.size();
+        std::vector<std::uint32_t> table(n * n <= (1u << 16) ? n * n : 0, UINT32_MAX);
         for (std::uint32_t i = 0; i < pairs.size(); ++i) {
             const std::uint64_t key = objects(i);
             auto it = std::lower_bound(counts.begin(), counts.end(), std::pair(key, 0u));
             if (it == counts.end() || it->first != key) it = counts.insert(it, {key, 0u});
+            if (i + 1 < pairs.size() && objects(i + 1) == key) {
+                // A run of one object pair (runs are common): counted without searching.
+                std::uint32_t j = i + 1;
+                while (j < pairs.size() && objects(j) == key) ++j;
+                it->second += j - i;
+                i = j - 1;
+                continue;
+            }
             ++it->second;
         }
         std::uint32_t start = 0;
         for (auto& [key, count] : counts) start += std::exchange(count, start);  // counts become starts
+        const auto slot = [&](std::size_t i) -> std::uint32_t& {
+            return std::lower_bound(counts.begin(), counts.end(), std::pair(objects(i), 0u))->second;
+        };
+        if (!table.empty()) {
+            for (std::uint32_t k = 0; k < counts.size(); ++k) {
+                table[(counts[k].first >> 32) * n + (counts[k].first & 0xffffffffu)] = k;
+            }
+        }
         for (std::uint32_t i = 0; i < pairs.size(); ++i) {
-            order[std::lower_bound(counts.begin(), counts.end(), std::pair(objects(i), 0u))->second++] = i;
+            std::uint32_t& next = table.empty() ? slot(i) : counts[table[pairs[i].obj_a * n + pairs[i].obj_b]].second;
+            order[next++] = i;
         }
     }
     const auto at = [&](std::size_t k) { return sorted ? static_cast<std::uint32_t>(k) : order[k]; };
     const std::span<std::uint32_t> set_of_pair = sized(set_kept);  // a vertex of its set (global numbering below)
-    thread_local regions::StampedMarks joined_a, joined_b;  // triangles whose corners are joined
+    // Triangles whose corners are joined, per thread: each range is worked on by one thread.
+    static thread_local regions::StampedMarks joined_a, joined_b;
     std::uint32_t base = 0;                                 // object pairs' vertex ranges, one after another
     std::vector<std::uint32_t> parent;
     const auto find = [&](std::uint32_t x) {
@@ -85,36 +107,49 @@ std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::spa
     }
     parent.resize(base);
     std::iota(parent.begin(), parent.end(), 0u);
-    for (const Range& range : ranges) {
-        const TrianglePair& first = pairs[at(range.begin)];
-        const ObjectFrame& a = frame.objects[first.obj_a];
-        const ObjectFrame& b = frame.objects[first.obj_b];
-        const bool self = first.obj_a == first.obj_b;
-        const std::uint32_t offset_b = range.base + (self ? 0 : a.topology->vertex_count);
-        joined_a.next(a.triangle_count());
-        if (!self) joined_b.next(b.triangle_count());
-        regions::StampedMarks& marks_b = self ? joined_a : joined_b;
-        const auto join_triangle = [&](const TriIndices& t, std::uint32_t offset, regions::StampedMarks& marks, std::uint32_t tri) {
-            if (!marks.mark(tri)) return;
-            unite(offset + t[0], offset + t[1]);
-            unite(offset + t[0], offset + t[2]);
-        };
-        for (std::size_t k = range.begin; k < range.end; ++k) {
-            const TrianglePair& pair = pairs[at(k)];
-            const TriIndices& ta = a.topology->triangles[pair.tri_a];
-            const TriIndices& tb = b.topology->triangles[pair.tri_b];
-            join_triangle(ta, range.base, joined_a, pair.tri_a);
-            join_triangle(tb, offset_b, marks_b, pair.tri_b);
-            unite(range.base + ta[0], offset_b + tb[0]);
-            set_of_pair[at(k)] = range.base + ta[0];
+    // Object pairs own disjoint vertex ranges: their unions run in parallel.
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ranges.size(), 1), [&](const auto& chunk) {
+        for (std::size_t r = chunk.begin(); r != chunk.end(); ++r) {
+            const Range& range = ranges[r];
+            const TrianglePair& first = pairs[at(range.begin)];
+            const ObjectFrame& a = frame.objects[first.obj_a];
+            const ObjectFrame& b = frame.objects[first.obj_b];
+            const bool self = first.obj_a == first.obj_b;
+            const std::uint32_t offset_b = range.base + (self ? 0 : a.topology->vertex_count);
+            joined_a.next(a.triangle_count());
+            if (!self) joined_b.next(b.triangle_count());
+            regions::StampedMarks& marks_b = self ? joined_a : joined_b;
+            const auto join_triangle = [&](const TriIndices& t, std::uint32_t offset, regions::StampedMarks& marks,
+                                           std::uint32_t tri) {
+                if (!marks.mark(tri)) return;
+                unite(offset + t[0], offset + t[1]);
+                unite(offset + t[0], offset + t[2]);
+            };
+            for (std::size_t k = range.begin; k < range.end; ++k) {
+                const TrianglePair& pair = pairs[at(k)];
+                const TriIndices& ta = a.topology->triangles[pair.tri_a];
+                const TriIndices& tb = b.topology->triangles[pair.tri_b];
+                join_triangle(ta, range.base, joined_a, pair.tri_a);
+                join_triangle(tb, offset_b, marks_b, pair.tri_b);
+                unite(range.base + ta[0], offset_b + tb[0]);
+                set_of_pair[at(k)] = range.base + ta[0];
+            }
         }
-    }
+    });
     // Regions in the order of their first pair; a counting pass sizes each before filling it.
     std::vector<std::uint32_t> region_of_root(base, UINT32_MAX);
     const std::span<std::uint32_t> region_of_pair = sized(region_kept);
+    // Each pair's root, in parallel (the unions are done: the walks only read), then numbered.
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 8192), [&](const auto& chunk) {
+        for (std::size_t i = chunk.begin(); i != chunk.end(); ++i) {
+            std::uint32_t x = set_of_pair[i];
+            while (parent[x] != x) x = parent[x];
+            region_of_pair[i] = x;
+        }
+    });
     std::vector<std::uint32_t> sizes;
     for (std::uint32_t i = 0; i < pairs.size(); ++i) {
-        std::uint32_t& region = region_of_root[find(set_of_pair[i])];
+        std::uint32_t& region = region_of_root[region_of_pair[i]];
         if (region == UINT32_MAX) {
             region = static_cast<std::uint32_t>(sizes.size());
             sizes.push_back(0);
@@ -123,23 +158,82 @@ std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::spa
         ++sizes[region];
     }
     std::vector<std::vector<std::uint32_t>> groups(sizes.size());
+    if (groups.size() == 1) {  // one region (dense contact often is): every pair
+        groups[0].resize(pairs.size());
+        std::iota(groups[0].begin(), groups[0].end(), 0u);
+        return groups;
+    }
     for (std::size_t r = 0; r < groups.size(); ++r) groups[r].reserve(sizes[r]);
     for (std::uint32_t i = 0; i < pairs.size(); ++i) groups[region_of_pair[i]].push_back(i);
     return groups;
 }
 
-Region describe(const Frame& frame, std::span<const TrianglePair> pairs, std::span<const regions::Piece> pieces,
+// What a region gathers from its pairs' pieces: their box, the coplanar area, and its
+// segments by their ends' keys (a segment two pairs report with the same ends, an edge lying in
+// the other surface seen from both of its triangles, counts once).
+struct Gathered {
+    Eigen::AlignedBox3d box;
+    double coplanar_area = 0;
+    struct Segment {
+        std::uint64_t hash;  ///< of both keys: equal ends, equal hashes
+        std::pair<regions::EndKey, regions::EndKey> keys;
+        std::uint32_t pair;
+        bool operator<(const Segment& other) const {
+            if (hash != other.hash) return hash < other.hash;
+            return keys != other.keys ? keys < other.keys : pair < other.pair;
+        }
+    };
+    std::vector<Segment> segments;
+
+    void join(Gathered& other) {
+        box.extend(other.box);
+        coplanar_area += other.coplanar_area;
+        segments.insert(segments.end(), other.segments.begin(), other.segments.end());
+    }
+};
+
+// A region's pairs' intersections, computed into `pieces` and gathered; in parallel over the
+// pairs of a large region (dense contact is often one region), split the same way on any
+// number of threads, so the sums are the same.
+Gathered intersect_region(const Frame& frame, std::span<const TrianglePair> pairs, std::span<regions::Piece> pieces,
+                          std::span<const std::uint32_t> indices) {
+    return tbb::parallel_deterministic_reduce(
+        tbb::blocked_range<std::size_t>(0, indices.size(), 4096), Gathered{},
+        [&](const tbb::blocked_range<std::size_t>& range, Gathered gathered) {
+            for (std::size_t k = range.begin(); k != range.end(); ++k) {
+                const std::uint32_t i = indices[k];
+                const regions::Piece piece = regions::intersect(frame, pairs[i]);
+                gathered.box.extend(piece.ends[0]);
+                gathered.box.extend(piece.ends[1]);
+                gathered.coplanar_area += piece.area;
+                if (piece.kind == PairIntersection::Kind::Segment) {
+                    const auto keys = std::minmax(piece.keys[0], piece.keys[1]);
+                    const std::uint64_t hash = regions::key_hash(keys.first) * 31 + regions::key_hash(keys.second);
+                    gathered.segments.push_back({hash, keys, i});
+                }
+                pieces[i] = piece;
+            }
+            return gathered;
+        },
+        [](Gathered a, Gathered b) {
+            a.join(b);
+            return a;
+        });
+}
+
+Region describe(const Frame& frame, std::span<const TrianglePair> pairs, std::span<regions::Piece> pieces,
                 std::vector<std::uint32_t> indices, const RegionOptions& options) {
     Region region;
     region.obj_a = pairs[indices.front()].obj_a;
     region.obj_b = pairs[indices.front()].obj_b;
     region.pairs = static_cast<std::uint32_t>(indices.size());
+    Gathered gathered = intersect_region(frame, pairs, pieces, indices);
+    region.box = gathered.box;
+    region.coplanar_area = gathered.coplanar_area;
+    auto& segments = gathered.segments;
     std::vector<std::uint32_t>& side_a = region.triangles_a;
     std::vector<std::uint32_t>& side_b = region.triangles_b;
     const bool self = region.obj_a == region.obj_b;
-    // A segment two pairs report with the same ends (an edge lying in the other surface, seen
-    // from both of its triangles) counts once.
-    std::vector<std::pair<std::pair<regions::EndKey, regions::EndKey>, std::uint32_t>> segments;
     // Each side's triangles once (a triangle is in many pairs of dense contact), sorted after.
     thread_local regions::StampedMarks marks_a, marks_b;
     marks_a.next(frame.objects[region.obj_a].triangle_count());
@@ -148,21 +242,14 @@ Region describe(const Frame& frame, std::span<const TrianglePair> pairs, std::sp
     for (const std::uint32_t i : indices) {
         if (marks_a.mark(pairs[i].tri_a)) side_a.push_back(pairs[i].tri_a);
         if (other.mark(pairs[i].tri_b)) (self ? side_a : side_b).push_back(pairs[i].tri_b);
-        const regions::Piece& piece = pieces[i];
-        region.box.extend(piece.ends[0]);
-        region.box.extend(piece.ends[1]);
-        region.coplanar_area += piece.area;
-        if (piece.kind == PairIntersection::Kind::Segment) {
-            segments.push_back({std::minmax(piece.keys[0], piece.keys[1]), i});
-        }
     }
-    std::sort(segments.begin(), segments.end());
+    std::sort(segments.begin(), segments.end());  // equal ends together
     std::vector<std::uint32_t> unique_segments;
     for (std::size_t k = 0; k < segments.size(); ++k) {
-        if (k > 0 && segments[k].first == segments[k - 1].first && segments[k].first.first.valid) continue;
-        const regions::Piece& piece = pieces[segments[k].second];
+        if (k > 0 && segments[k].keys == segments[k - 1].keys && segments[k].keys.first.valid) continue;
+        const regions::Piece& piece = pieces[segments[k].pair];
         region.curve_length += (piece.ends[1] - piece.ends[0]).norm();
-        unique_segments.push_back(segments[k].second);
+        unique_segments.push_back(segments[k].pair);
     }
     if (!std::is_sorted(side_a.begin(), side_a.end())) std::sort(side_a.begin(), side_a.end());
     if (!std::is_sorted(side_b.begin(), side_b.end())) std::sort(side_b.begin(), side_b.end());
@@ -184,9 +271,6 @@ std::vector<Region> find_regions(const Frame& frame, std::span<const TrianglePai
     thread_local std::vector<regions::Piece> kept;
     if (kept.size() < pairs.size()) kept.resize(pairs.size());
     const std::span<regions::Piece> pieces(kept.data(), pairs.size());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 1024), [&](const auto& range) {
-        for (std::size_t i = range.begin(); i != range.end(); ++i) pieces[i] = regions::intersect(frame, pairs[i]);
-    });
     std::vector<std::vector<std::uint32_t>> groups = group_pairs(frame, pairs);
     std::vector<Region> result(groups.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, groups.size(), 1), [&](const auto& range) {

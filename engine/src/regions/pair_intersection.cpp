@@ -175,45 +175,56 @@ Piece crossing(const Triangle& a, const TriIndices& ia, const Triangle& b, const
     return piece;
 }
 
-// Coplanar triangles: a clipped by b in their shared plane.
+// A triangle clipped by three half-planes keeps at most 6 corners: fixed buffers.
+template <typename Point>
+struct Clipped {
+    std::array<Point, 8> corners;
+    std::size_t size = 0;
+    void push(const Point& p) { corners[size++] = p; }
+};
+
+// Triangle a clipped by triangle b (Sutherland-Hodgman) in the coordinates (u, v) of their
+// points; the other coordinates of a 3D point are interpolated along. The result is one of
+// the two buffers.
+template <typename Point>
+Clipped<Point>& clip(const std::array<Point, 3>& a, const std::array<Point, 3>& b, int u, int v,
+                     Clipped<Point> (&buffers)[2]) {
+    const auto cross2 = [&](const Point& p, const Point& q, const Point& r) {
+        return (q[u] - p[u]) * (r[v] - p[v]) - (q[v] - p[v]) * (r[u] - p[u]);
+    };
+    const double orientation = cross2(b[0], b[1], b[2]) >= 0 ? 1.0 : -1.0;
+    Clipped<Point>* clipped = &buffers[0];
+    Clipped<Point>* next = &buffers[1];
+    clipped->size = 0;
+    for (const Point& corner : a) clipped->push(corner);
+    for (int e = 0; e < 3 && clipped->size > 0; ++e) {
+        const Point& p = b[e];
+        const Point& q = b[(e + 1) % 3];
+        next->size = 0;
+        double ds = orientation * cross2(p, q, clipped->corners[0]);
+        for (std::size_t i = 0; i < clipped->size; ++i) {
+            const Point& s = clipped->corners[i];
+            const Point& t = clipped->corners[i + 1 == clipped->size ? 0 : i + 1];
+            const double dt = orientation * cross2(p, q, t);
+            if (ds >= 0) next->push(s);
+            if ((ds >= 0) != (dt >= 0) && ds != dt && next->size < next->corners.size()) next->push(s + (ds / (ds - dt)) * (t - s));
+            ds = dt;
+        }
+        std::swap(clipped, next);
+    }
+    return *clipped;
+}
+
+// Coplanar triangles: a clipped by b in their shared plane, in the projection that drops the
+// axis of the larger normal's largest component.
 Piece coplanar(const Triangle& a, const Triangle& b, std::vector<Vec3>* polygon) {
     const Vec3 na = (a[1] - a[0]).cross(a[2] - a[0]);
     const Vec3 nb = (b[1] - b[0]).cross(b[2] - b[0]);
     const Vec3 normal = na.squaredNorm() >= nb.squaredNorm() ? na : nb;
     int drop = 0;
     normal.cwiseAbs().maxCoeff(&drop);
-    const int u = (drop + 1) % 3, v = (drop + 2) % 3;
-    const auto cross2 = [&](const Vec3& p, const Vec3& q, const Vec3& r) {
-        return (q[u] - p[u]) * (r[v] - p[v]) - (q[v] - p[v]) * (r[u] - p[u]);
-    };
-    const double orientation = cross2(b[0], b[1], b[2]) >= 0 ? 1.0 : -1.0;
-    // A triangle clipped by three half-planes keeps at most 6 corners: fixed buffers.
-    struct Polygon {
-        std::array<Vec3, 8> corners;
-        std::size_t size = 0;
-        void push(const Vec3& p) { corners[size++] = p; }
-    };
-    Polygon buffers[2];
-    Polygon* clipped_ptr = &buffers[0];
-    Polygon* next_ptr = &buffers[1];
-    for (const Vec3& corner : a) clipped_ptr->push(corner);
-    for (int e = 0; e < 3 && clipped_ptr->size > 0; ++e) {
-        const Vec3& p = b[e];
-        const Vec3& q = b[(e + 1) % 3];
-        Polygon& from = *clipped_ptr;
-        Polygon& next = *next_ptr;
-        next.size = 0;
-        for (std::size_t i = 0; i < from.size; ++i) {
-            const Vec3& s = from.corners[i];
-            const Vec3& t = from.corners[i + 1 == from.size ? 0 : i + 1];
-            const double ds = orientation * cross2(p, q, s);
-            const double dt = orientation * cross2(p, q, t);
-            if (ds >= 0) next.push(s);
-            if ((ds >= 0) != (dt >= 0) && ds != dt && next.size < next.corners.size()) next.push(s + (ds / (ds - dt)) * (t - s));
-        }
-        std::swap(clipped_ptr, next_ptr);
-    }
-    Polygon& clipped = *clipped_ptr;
+    Clipped<Vec3> buffers[2];
+    Clipped<Vec3>& clipped = clip(a, b, (drop + 1) % 3, (drop + 2) % 3, buffers);
     // Rounding or a degenerate triangle can clip everything away from a pair the exact test
     // found touching: keep a corner of a.
     if (clipped.size == 0) clipped.push(a[0]);
@@ -228,6 +239,51 @@ Piece coplanar(const Triangle& a, const Triangle& b, std::vector<Vec3>* polygon)
     piece.ends = {box.min(), box.max()};
     if (piece.kind != Kind::Polygon) piece.ends = {clipped.corners[0], clipped.corners[n - 1]};
     if (polygon) polygon->assign(clipped.corners.begin(), clipped.corners.begin() + static_cast<std::ptrdiff_t>(n));
+    return piece;
+}
+
+// The axis (0, 1 or 2) whose coordinate all six corners share exactly (both triangles in one
+// axis-aligned plane: a floor, sheets at rest), or -1. Every orient3d of such points is 0.
+int shared_axis(const Triangle& a, const Triangle& b) {
+    for (int k = 0; k < 3; ++k) {
+        const double c = a[0][k];
+        if (a[1][k] == c && a[2][k] == c && b[0][k] == c && b[1][k] == c && b[2][k] == c) return k;
+    }
+    return -1;
+}
+
+// coplanar() for triangles in the plane x_k = c: the clip in 2D, the points lifted back with
+// x_k = c (which the 3D clip's interpolation also gives exactly).
+Piece coplanar_in_axis_plane(const Triangle& a, const Triangle& b, int k, std::vector<Vec3>* polygon) {
+    using Point = Eigen::Vector2d;
+    const int u = (k + 1) % 3, v = (k + 2) % 3;
+    const auto flat = [&](const Vec3& p) { return Point(p[u], p[v]); };
+    const double c = a[0][k];
+    const auto lift = [&](const Point& p) {  // scalar stores and loads (no partial-store stall)
+        return k == 0 ? Vec3(c, p[0], p[1]) : k == 1 ? Vec3(p[1], c, p[0]) : Vec3(p[0], p[1], c);
+    };
+    Clipped<Point> buffers[2];
+    Clipped<Point>& clipped =
+        clip<Point>({flat(a[0]), flat(a[1]), flat(a[2])}, {flat(b[0]), flat(b[1]), flat(b[2])}, 0, 1, buffers);
+    if (clipped.size == 0) clipped.push(flat(a[0]));
+    const std::size_t n = clipped.size;
+    Piece piece;
+    double twice_area = 0;
+    Point lo = clipped.corners[0], hi = clipped.corners[0];
+    for (std::size_t i = 0; i < n; ++i) {
+        const Point& p = clipped.corners[i];
+        const Point& q = clipped.corners[i + 1 == n ? 0 : i + 1];
+        twice_area += p[0] * q[1] - p[1] * q[0];
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    piece.area = n >= 3 ? 0.5 * std::abs(twice_area) : 0.0;
+    piece.kind = n >= 3 ? Kind::Polygon : n == 2 ? Kind::Segment : Kind::Point;
+    piece.ends = piece.kind == Kind::Polygon ? std::array{lift(lo), lift(hi)} : std::array{lift(clipped.corners[0]), lift(clipped.corners[n - 1])};
+    if (polygon) {
+        polygon->clear();
+        for (std::size_t i = 0; i < n; ++i) polygon->push_back(lift(clipped.corners[i]));
+    }
     return piece;
 }
 
@@ -306,6 +362,9 @@ Piece intersect(const Frame& frame, const TrianglePair& pair, std::vector<Vec3>*
     const ObjectFrame& object_b = frame.objects[pair.obj_b];
     const Triangle a = object_a.corners(pair.tri_a);
     const Triangle b = object_b.corners(pair.tri_b);
+    if (fast) {
+        if (const int axis = shared_axis(a, b); axis >= 0) return coplanar_in_axis_plane(a, b, axis, polygon);
+    }
     const std::array<int, 3> sa = plane_sides(b, a, fast);
     const std::array<int, 3> sb = plane_sides(a, b, fast);
     const bool flat_a = sa == std::array<int, 3>{0, 0, 0};

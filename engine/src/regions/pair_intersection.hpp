@@ -38,6 +38,20 @@ struct EndKey {
     friend auto operator<=>(const EndKey&, const EndKey&) = default;
 };
 
+/// A hash of a key (equal keys hash equal). Sorting keys by (hash, key) puts equal keys
+/// together, as sorting by key does, with one integer comparison deciding nearly every step
+/// instead of the features' fields one by one.
+inline std::uint64_t key_hash(const EndKey& key) {
+    std::uint64_t h = key.valid ? 0x9E3779B97F4A7C15ull : 0;
+    for (const Feature& f : {key.first, key.second}) {
+        for (const std::uint64_t x : {std::uint64_t(f.object) << 2 | f.kind, std::uint64_t(f.a) << 32 | f.b}) {
+            h = (h ^ x) * 0xBF58476D1CE4E5B9ull;
+            h ^= h >> 31;
+        }
+    }
+    return h;
+}
+
 /// The compact form find_regions keeps per pair: a point, a segment with its ends' keys, or a
 /// coplanar polygon by its area and box.
 struct Piece {
@@ -53,7 +67,8 @@ std::array<int, 3> plane_sides(const std::array<Vec3, 3>& plane, const std::arra
 
 /// The intersection of `pair`'s triangles in `frame`; `polygon` receives a coplanar
 /// polygon's corners (or a point or segment's points) when not null. `fast` false: the general
-/// path for every pair, and plane_sides without its shortcut (the tests compare the two).
+/// path for every pair (no 2D clip for triangles in one axis-aligned plane, no four-orientation
+/// crossing), and plane_sides without its shortcut (the tests compare the two).
 Piece intersect(const Frame& frame, const TrianglePair& pair, std::vector<Vec3>* polygon = nullptr, bool fast = true);
 
 }  // namespace collidescope::regions

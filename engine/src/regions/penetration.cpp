@@ -72,6 +72,9 @@ std::optional<double> border_position(const EndKey& key, std::uint32_t object, c
 struct TriangleMeasure {
     double inside_area = 0;
     std::array<Status, 3> corners{Status::Unknown, Status::Unknown, Status::Unknown};
+    /// Per corner, an upper bound on its distance to Y's surface: the nearest segment end (the
+    /// segments lie on Y's surface).
+    std::array<double, 3> bounds{};
 };
 
 // The part of triangle `tri` of X inside Y, from its segments.
@@ -81,6 +84,11 @@ TriangleMeasure measure_triangle(const ObjectFrame& x, std::uint32_t tri, std::s
     const Vec3 normal = (c[1] - c[0]).cross(c[2] - c[0]);
     const double twice_area = normal.norm();
     if (!(twice_area > 0) || segments.empty()) return result;
+    for (int k = 0; k < 3; ++k) {
+        double nearest = std::numeric_limits<double>::infinity();
+        for (const Oriented& s : segments) nearest = std::min({nearest, (s.from - c[k]).squaredNorm(), (s.to - c[k]).squaredNorm()});
+        result.bounds[k] = std::sqrt(nearest);
+    }
     const Vec3 unit = normal / twice_area;
     const Vec3& origin = c[0];
     const auto contour = [&](const Vec3& p, const Vec3& q) { return 0.5 * unit.dot((p - origin).cross(q - origin)); };
@@ -143,6 +151,23 @@ TriangleMeasure measure_triangle(const ObjectFrame& x, std::uint32_t tri, std::s
     return result;
 }
 
+// Six times the signed volume of a closed mesh (the sum of its triangles' tetrahedra with its
+// first vertex), in scalars: through Vec3 temporaries the loop stalled on partial stores.
+double signed_volume(const ObjectFrame& mesh) {
+    if (mesh.vertices.size() == 0) return 0;
+    const double ox = mesh.vertices[0].x(), oy = mesh.vertices[0].y(), oz = mesh.vertices[0].z();
+    const std::span<const TriIndices> triangles = mesh.topology->triangles;
+    const Vec3* v = mesh.vertices.span().data();
+    double volume = 0;
+    for (const TriIndices& t : triangles) {
+        const double ax = v[t[0]].x() - ox, ay = v[t[0]].y() - oy, az = v[t[0]].z() - oz;
+        const double bx = v[t[1]].x() - ox, by = v[t[1]].y() - oy, bz = v[t[1]].z() - oz;
+        const double cx = v[t[2]].x() - ox, cy = v[t[2]].y() - oy, cz = v[t[2]].z() - oz;
+        volume += ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
+    }
+    return volume;
+}
+
 // Per thread, reused over calls.
 struct Scratch {
     StampedMarks colliding, vertex, triangle;
@@ -171,13 +196,7 @@ public:
         m_shape = mesh_shape(*xo.topology);
         // Y's faces point out of it when its signed volume is positive.
         const ObjectFrame& yo = frame.objects[y];
-        const Vec3 centre = yo.vertices.size() > 0 ? yo.vertices[0] : Vec3::Zero();
-        double volume = 0;
-        for (std::uint32_t t = 0; t < yo.triangle_count(); ++t) {
-            const auto c = yo.corners(t);
-            volume += (c[0] - centre).dot((c[1] - centre).cross(c[2] - centre));
-        }
-        m_outward = volume >= 0 ? 1.0 : -1.0;
+        m_outward = signed_volume(yo) >= 0 ? 1.0 : -1.0;
     }
 
     SideResult measure(const Region& region) {
@@ -191,11 +210,13 @@ public:
         double area = 0;
         std::vector<std::uint32_t> inside;  // X's vertices inside Y, in the order reached
         std::vector<std::uint32_t> from;    // per inside vertex: the one the flood came from (none: k_none)
+        std::vector<double> seed_bound;     // per inside vertex the walk found: its bound (measure_triangle)
         constexpr std::uint32_t k_none = UINT32_MAX;
-        const auto reach = [&](std::uint32_t v, std::uint32_t parent) {
+        const auto reach = [&](std::uint32_t v, std::uint32_t parent, double bound) {
             if (!m_scratch.vertex.mark(v)) return;
             inside.push_back(v);
             from.push_back(parent);
+            seed_bound.push_back(bound);
         };
         std::vector<Oriented> segments;
         std::map<std::uint32_t, double> touching;  // triangles meeting Y without a segment: coplanar area
@@ -215,7 +236,7 @@ public:
             }
             area += t.inside_area;
             for (int k = 0; k < 3; ++k) {
-                if (t.corners[k] == Status::Inside) reach(xo.topology->triangles[tri][k], k_none);
+                if (t.corners[k] == Status::Inside) reach(xo.topology->triangles[tri][k], k_none, t.bounds[k]);
             }
             begin = end;
         }
@@ -235,12 +256,14 @@ public:
                     continue;
                 }
                 area += full;
-                for (const std::uint32_t w : xo.topology->triangles[t]) reach(w, static_cast<std::uint32_t>(next));
+                for (const std::uint32_t w : xo.topology->triangles[t]) reach(w, static_cast<std::uint32_t>(next), 0);
             }
         }
         // The deepest. Seeded by the vertex the flood reached last (farthest from the curves),
-        // then in flood order, each vertex with an upper bound on its distance to Y: its
-        // flood parent's bound plus the edge between them (the distance is 1-Lipschitz). Only a
+        // then in flood order, each vertex with an upper bound on its distance to Y: a corner of
+        // a crossed triangle, its distance to the nearest end of that triangle's segments (which
+        // lie on Y); any other, its flood parent's bound plus the edge between them (the
+        // distance is 1-Lipschitz). Only a
         // vertex whose bound exceeds the deepest so far is searched, and that search stops at
         // the first triangle within the deepest (the distance to it is again an upper bound).
         double depth = 0;
@@ -250,8 +273,7 @@ public:
             std::vector<double> bound(inside.size());
             for (std::size_t k = 0; k < inside.size(); ++k) {
                 const Vec3& v = xo.vertices[inside[k]];
-                const double reachable = from[k] == k_none ? std::numeric_limits<double>::infinity()
-                                                           : bound[from[k]] + (v - xo.vertices[inside[from[k]]]).norm();
+                const double reachable = from[k] == k_none ? seed_bound[k] : bound[from[k]] + (v - xo.vertices[inside[from[k]]]).norm();
                 bound[k] = reachable > depth ? std::min(reachable, m_distance->beyond(v, depth)) : reachable;
                 depth = std::max(depth, bound[k]);
             }

@@ -106,8 +106,8 @@ double SurfaceDistance::beyond(const Vec3& p, double bound) const {
     double best = std::numeric_limits<double>::infinity();
     if (m_tree->empty()) return best;
     const double enough = bound > 0 ? bound * bound : -1;  // squared: a triangle this near ends the search
-    std::vector<std::uint32_t> stack{0};
-    stack.reserve(64);
+    thread_local std::vector<std::uint32_t> stack;  // kept: a search is short, an allocation was a fifth of it
+    stack.assign(1, 0);
     while (!stack.empty()) {
         const std::uint32_t index = stack.back();
         stack.pop_back();
