@@ -3,6 +3,7 @@
 // regions, and over the pairs of a large region).
 
 #include "curves.hpp"
+#include "mesh_shape.hpp"
 #include "pair_intersection.hpp"
 #include "penetration.hpp"
 #include "stamped_marks.hpp"
@@ -192,11 +193,12 @@ struct Gathered {
     }
 };
 
-// A region's pairs' intersections, computed into `pieces` and gathered; in parallel over the
-// pairs of a large region (dense contact is often one region), split the same way on any
-// number of threads, so the sums are the same.
+// A region's pairs' intersections, gathered, and kept in `pieces`: the segments (the curves
+// need them), and every piece when `keep_all` (the penetration measure reads them all). In
+// parallel over the pairs of a large region (dense contact is often one region), split the same
+// way on any number of threads, so the sums are the same.
 Gathered intersect_region(const Frame& frame, std::span<const TrianglePair> pairs, std::span<regions::Piece> pieces,
-                          std::span<const std::uint32_t> indices) {
+                          std::span<const std::uint32_t> indices, bool keep_all) {
     return tbb::parallel_deterministic_reduce(
         tbb::blocked_range<std::size_t>(0, indices.size(), 4096), Gathered{},
         [&](const tbb::blocked_range<std::size_t>& range, Gathered gathered) {
@@ -207,11 +209,13 @@ Gathered intersect_region(const Frame& frame, std::span<const TrianglePair> pair
                 gathered.box.extend(piece.ends[1]);
                 gathered.coplanar_area += piece.area;
                 if (piece.kind == PairIntersection::Kind::Segment) {
+                    pieces[i] = piece;
                     const auto keys = std::minmax(piece.keys[0], piece.keys[1]);
                     const std::uint64_t hash = regions::key_hash(keys.first) * 31 + regions::key_hash(keys.second);
                     gathered.segments.push_back({hash, keys, i});
+                } else if (keep_all) {
+                    pieces[i] = piece;  // only then: a dense frame's pieces are gigabytes a second
                 }
-                pieces[i] = piece;
             }
             return gathered;
         },
@@ -227,7 +231,10 @@ Region describe(const Frame& frame, std::span<const TrianglePair> pairs, std::sp
     region.obj_a = pairs[indices.front()].obj_a;
     region.obj_b = pairs[indices.front()].obj_b;
     region.pairs = static_cast<std::uint32_t>(indices.size());
-    Gathered gathered = intersect_region(frame, pairs, pieces, indices);
+    const bool measured = options.penetration && region.obj_a != region.obj_b &&
+                          (regions::mesh_shape(*frame.objects[region.obj_a].topology)->closed ||
+                           regions::mesh_shape(*frame.objects[region.obj_b].topology)->closed);
+    Gathered gathered = intersect_region(frame, pairs, pieces, indices, measured);
     region.box = gathered.box;
     region.coplanar_area = gathered.coplanar_area;
     auto& segments = gathered.segments;
