@@ -4,7 +4,10 @@
 
 #include "curves.hpp"
 
+#include "first_seen.hpp"
+
 #include <algorithm>
+#include <utility>
 #include <span>
 
 namespace collidescope::regions {
@@ -33,7 +36,6 @@ Graph build_graph(std::span<const Piece> pieces, std::span<const std::uint32_t> 
     Graph graph;
     struct Entry {
         std::uint64_t hash;
-        EndKey key;
         std::uint32_t segment, end;
     };
     std::vector<Entry> entries;
@@ -42,20 +44,37 @@ Graph build_graph(std::span<const Piece> pieces, std::span<const std::uint32_t> 
         if (piece.kind != PairIntersection::Kind::Segment) continue;
         const auto segment = static_cast<std::uint32_t>(graph.segments.size());
         graph.segments.push_back(&piece);
-        for (std::uint32_t end = 0; end < 2; ++end) entries.push_back({key_hash(piece.keys[end]), piece.keys[end], segment, end});
+        for (std::uint32_t end = 0; end < 2; ++end) entries.push_back({key_hash(piece.keys[end]), segment, end});
     }
-    // Equal keys together (by hash first: the fields' comparison was most of the time here).
-    std::sort(entries.begin(), entries.end(),
-              [](const Entry& x, const Entry& y) { return x.hash != y.hash ? x.hash < y.hash : x.key < y.key; });
+    const auto key = [&](const Entry& e) -> const EndKey& { return graph.segments[e.segment]->keys[e.end]; };
+    // Nodes in the order of their first end; a key without a feature joins nothing (a node of
+    // its own). Then each node's ends, in order, in one array.
+    FirstSeen seen(entries.size());
+    std::vector<std::uint32_t> node_of(entries.size());
+    std::vector<std::uint32_t> counts;
+    for (std::uint32_t i = 0; i < entries.size(); ++i) {
+        const EndKey& k = key(entries[i]);
+        const std::uint32_t first =
+            k.valid ? seen.find_or_add(entries[i].hash, i, [&](std::uint32_t j) { return key(entries[j]) == k; }) : i;
+        if (first == i) {
+            node_of[i] = static_cast<std::uint32_t>(counts.size());
+            counts.push_back(0);
+        } else {
+            node_of[i] = node_of[first];
+        }
+        ++counts[node_of[i]];
+    }
+    graph.node_begin.resize(counts.size());
+    std::uint32_t start = 0;
+    for (std::size_t node = 0; node < counts.size(); ++node) {
+        graph.node_begin[node] = start;
+        start += std::exchange(counts[node], graph.node_begin[node]);  // counts become fill positions
+    }
     graph.nodes_of.resize(graph.segments.size());
-    graph.ends.reserve(entries.size());
-    for (std::size_t i = 0; i < entries.size(); ++i) {
-        // A key without a feature joins nothing: a node of its own.
-        const bool same = i > 0 && entries[i].key.valid && entries[i].key == entries[i - 1].key;
-        if (!same) graph.node_begin.push_back(static_cast<std::uint32_t>(i));
-        const auto node = static_cast<std::uint32_t>(graph.node_begin.size() - 1);
-        graph.ends.push_back({entries[i].segment, entries[i].end});
-        graph.nodes_of[entries[i].segment][entries[i].end] = node;
+    graph.ends.resize(entries.size());
+    for (std::uint32_t i = 0; i < entries.size(); ++i) {
+        graph.ends[counts[node_of[i]]++] = {entries[i].segment, entries[i].end};
+        graph.nodes_of[entries[i].segment][entries[i].end] = node_of[i];
     }
     graph.node_begin.push_back(static_cast<std::uint32_t>(entries.size()));
     return graph;

@@ -3,6 +3,7 @@
 // regions, and over the pairs of a large region).
 
 #include "curves.hpp"
+#include "first_seen.hpp"
 #include "mesh_shape.hpp"
 #include "pair_intersection.hpp"
 #include "penetration.hpp"
@@ -177,12 +178,7 @@ struct Gathered {
     double coplanar_area = 0;
     struct Segment {
         std::uint64_t hash;  ///< of both keys: equal ends, equal hashes
-        std::pair<regions::EndKey, regions::EndKey> keys;
-        std::uint32_t pair;
-        bool operator<(const Segment& other) const {
-            if (hash != other.hash) return hash < other.hash;
-            return keys != other.keys ? keys < other.keys : pair < other.pair;
-        }
+        std::uint32_t pair;  ///< its piece holds the keys
     };
     std::vector<Segment> segments;
 
@@ -210,9 +206,8 @@ Gathered intersect_region(const Frame& frame, std::span<const TrianglePair> pair
                 gathered.coplanar_area += piece.area;
                 if (piece.kind == PairIntersection::Kind::Segment) {
                     pieces[i] = piece;
-                    const auto keys = std::minmax(piece.keys[0], piece.keys[1]);
-                    const std::uint64_t hash = regions::key_hash(keys.first) * 31 + regions::key_hash(keys.second);
-                    gathered.segments.push_back({hash, keys, i});
+                    const std::uint64_t h0 = regions::key_hash(piece.keys[0]), h1 = regions::key_hash(piece.keys[1]);
+                    gathered.segments.push_back({std::min(h0, h1) * 31 + std::max(h0, h1), i});
                 } else if (keep_all) {
                     pieces[i] = piece;  // only then: a dense frame's pieces are gigabytes a second
                 }
@@ -250,10 +245,18 @@ Region describe(const Frame& frame, std::span<const TrianglePair> pairs, std::sp
         if (marks_a.mark(pairs[i].tri_a)) side_a.push_back(pairs[i].tri_a);
         if (other.mark(pairs[i].tri_b)) (self ? side_a : side_b).push_back(pairs[i].tri_b);
     }
-    std::sort(segments.begin(), segments.end());  // equal ends together
+    // A segment reported again with the same ends (keys with features) counts once: the first.
+    const auto keys = [&](const Gathered::Segment& x) {
+        return std::minmax(pieces[x.pair].keys[0], pieces[x.pair].keys[1]);
+    };
+    regions::FirstSeen seen(segments.size());
     std::vector<std::uint32_t> unique_segments;
-    for (std::size_t k = 0; k < segments.size(); ++k) {
-        if (k > 0 && segments[k].keys == segments[k - 1].keys && segments[k].keys.first.valid) continue;
+    for (std::uint32_t k = 0; k < segments.size(); ++k) {
+        const auto ends = keys(segments[k]);
+        if (ends.first.valid &&
+            seen.find_or_add(segments[k].hash, k, [&](std::uint32_t j) { return keys(segments[j]) == ends; }) != k) {
+            continue;
+        }
         const regions::Piece& piece = pieces[segments[k].pair];
         region.curve_length += (piece.ends[1] - piece.ends[0]).norm();
         unique_segments.push_back(segments[k].pair);
