@@ -72,9 +72,6 @@ std::optional<double> border_position(const EndKey& key, std::uint32_t object, c
 struct TriangleMeasure {
     double inside_area = 0;
     std::array<Status, 3> corners{Status::Unknown, Status::Unknown, Status::Unknown};
-    /// Per corner, an upper bound on its distance to Y's surface: the nearest segment end (the
-    /// segments lie on Y's surface).
-    std::array<double, 3> bounds{};
 };
 
 // The part of triangle `tri` of X inside Y, from its segments.
@@ -84,11 +81,6 @@ TriangleMeasure measure_triangle(const ObjectFrame& x, std::uint32_t tri, std::s
     const Vec3 normal = (c[1] - c[0]).cross(c[2] - c[0]);
     const double twice_area = normal.norm();
     if (!(twice_area > 0) || segments.empty()) return result;
-    for (int k = 0; k < 3; ++k) {
-        double nearest = std::numeric_limits<double>::infinity();
-        for (const Oriented& s : segments) nearest = std::min({nearest, (s.from - c[k]).squaredNorm(), (s.to - c[k]).squaredNorm()});
-        result.bounds[k] = std::sqrt(nearest);
-    }
     const Vec3 unit = normal / twice_area;
     const Vec3& origin = c[0];
     const auto contour = [&](const Vec3& p, const Vec3& q) { return 0.5 * unit.dot((p - origin).cross(q - origin)); };
@@ -210,13 +202,13 @@ public:
         double area = 0;
         std::vector<std::uint32_t> inside;  // X's vertices inside Y, in the order reached
         std::vector<std::uint32_t> from;    // per inside vertex: the one the flood came from (none: k_none)
-        std::vector<double> seed_bound;     // per inside vertex the walk found: its bound (measure_triangle)
+        std::vector<Vec3> seed_witness;     // per inside vertex the walk found: a near point of Y's surface
         constexpr std::uint32_t k_none = UINT32_MAX;
-        const auto reach = [&](std::uint32_t v, std::uint32_t parent, double bound) {
+        const auto reach = [&](std::uint32_t v, std::uint32_t parent, const Vec3& witness) {
             if (!m_scratch.vertex.mark(v)) return;
             inside.push_back(v);
             from.push_back(parent);
-            seed_bound.push_back(bound);
+            seed_witness.push_back(witness);
         };
         std::vector<Oriented> segments;
         std::map<std::uint32_t, double> touching;  // triangles meeting Y without a segment: coplanar area
@@ -236,7 +228,20 @@ public:
             }
             area += t.inside_area;
             for (int k = 0; k < 3; ++k) {
-                if (t.corners[k] == Status::Inside) reach(xo.topology->triangles[tri][k], k_none, t.bounds[k]);
+                if (t.corners[k] != Status::Inside) continue;
+                // Its witness: the nearest point of the faces of Y its triangle meets.
+                const Vec3& corner = xo.vertices[xo.topology->triangles[tri][k]];
+                Vec3 witness = corner;
+                double nearest = std::numeric_limits<double>::infinity();
+                for (std::size_t j = begin; j < end; ++j) {
+                    const auto f = yo.corners(tri_y(m_pairs[by_triangle[j]]));
+                    const Vec3 q = closest_point_on_triangle(corner, f[0], f[1], f[2]);
+                    if ((q - corner).squaredNorm() < nearest) {
+                        nearest = (q - corner).squaredNorm();
+                        witness = q;
+                    }
+                }
+                reach(xo.topology->triangles[tri][k], k_none, witness);
             }
             begin = end;
         }
@@ -256,26 +261,34 @@ public:
                     continue;
                 }
                 area += full;
-                for (const std::uint32_t w : xo.topology->triangles[t]) reach(w, static_cast<std::uint32_t>(next), 0);
+                for (const std::uint32_t w : xo.topology->triangles[t]) reach(w, static_cast<std::uint32_t>(next), Vec3::Zero());
             }
         }
         // The deepest. Seeded by the vertex the flood reached last (farthest from the curves),
-        // then in flood order, each vertex with an upper bound on its distance to Y: a corner of
-        // a crossed triangle, its distance to the nearest end of that triangle's segments (which
-        // lie on Y); any other, its flood parent's bound plus the edge between them (the
-        // distance is 1-Lipschitz). Only a
+        // then in flood order, each vertex with an upper bound on its distance to Y: its
+        // distance to a witness, a point of Y's surface (for a corner of a crossed triangle, the
+        // nearest point of the faces that triangle meets; for a vertex the flood reached, its
+        // parent's witness, or the point its own search found). Only a
         // vertex whose bound exceeds the deepest so far is searched, and that search stops at
         // the first triangle within the deepest (the distance to it is again an upper bound).
         double depth = 0;
         if (!inside.empty()) {
             if (!m_distance) m_distance.emplace(*yo.topology, yo.vertices.span());
             depth = (*m_distance)(xo.vertices[inside.back()]);
-            std::vector<double> bound(inside.size());
+            std::vector<Vec3> witness(inside.size());
             for (std::size_t k = 0; k < inside.size(); ++k) {
                 const Vec3& v = xo.vertices[inside[k]];
-                const double reachable = from[k] == k_none ? seed_bound[k] : bound[from[k]] + (v - xo.vertices[inside[from[k]]]).norm();
-                bound[k] = reachable > depth ? std::min(reachable, m_distance->beyond(v, depth)) : reachable;
-                depth = std::max(depth, bound[k]);
+                witness[k] = from[k] == k_none ? seed_witness[k] : witness[from[k]];
+                double bound = (v - witness[k]).norm();
+                if (bound > depth) {
+                    Vec3 nearer;
+                    const double searched = m_distance->beyond(v, depth, &nearer);
+                    if (searched < bound) {
+                        bound = searched;
+                        witness[k] = nearer;
+                    }
+                }
+                depth = std::max(depth, bound);
             }
         }
         return {area, depth};

@@ -102,8 +102,9 @@ SurfaceDistance::~SurfaceDistance() {
     if (m_revision != 0 && m_tree) tree_cache().give(m_revision, std::move(m_tree));
 }
 
-double SurfaceDistance::beyond(const Vec3& p, double bound) const {
+double SurfaceDistance::beyond(const Vec3& p, double bound, Vec3* nearest) const {
     double best = std::numeric_limits<double>::infinity();
+    Vec3 best_point = p;
     if (m_tree->empty()) return best;
     const double enough = bound > 0 ? bound * bound : -1;  // squared: a triangle this near ends the search
     thread_local std::vector<std::uint32_t> stack;  // kept: a search is short, an allocation was a fifth of it
@@ -117,9 +118,12 @@ double SurfaceDistance::beyond(const Vec3& p, double bound) const {
             for (std::uint32_t k = node.index; k < node.index + node.count; ++k) {
                 const TriIndices& t = m_triangles[m_tree->triangle_ids[k]];
                 const Vec3 q = closest_point_on_triangle(p, m_vertices[t[0]], m_vertices[t[1]], m_vertices[t[2]]);
-                best = std::min(best, (q - p).squaredNorm());
+                if ((q - p).squaredNorm() < best) {
+                    best = (q - p).squaredNorm();
+                    best_point = q;
+                }
             }
-            if (best <= enough) return std::sqrt(best);
+            if (best <= enough) break;
             continue;
         }
         const std::uint32_t left = index + 1, right = node.index;  // preorder: the left child is next
@@ -127,6 +131,7 @@ double SurfaceDistance::beyond(const Vec3& p, double bound) const {
         stack.push_back(left_first ? right : left);
         stack.push_back(left_first ? left : right);
     }
+    if (nearest) *nearest = best_point;
     return std::sqrt(best);
 }
 
