@@ -55,14 +55,18 @@ inline std::string quoted(const std::string& word) {
 /// The shell command that runs `args` on `ranks` ranks in `dir`, output to mpi.stdout and
 /// mpi.stderr there. `exec`s mpirun itself, so a shell started with it becomes mpirun (a test
 /// can signal that pid); `limit` > 0 ends a run that hangs after that many seconds (exit 124),
-/// through `timeout`, which then sits between the shell and mpirun.
+/// through `timeout`, which then sits between the shell and mpirun. `sigkill_timeout` > 0 sets
+/// mpirun's `odls_base_sigkill_timeout` (its wait before SIGTERM after a SIGINT, and again before
+/// SIGKILL; docs/how-to/mpi.md), 0 keeps Open MPI's default of one second.
 inline std::string mpirun_command(int ranks, const std::vector<std::string>& args, const std::filesystem::path& dir,
-                                  int limit = 300) {
+                                  int limit = 300, int sigkill_timeout = 0) {
     setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
     setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
     std::string command = "cd " + quoted(dir.string()) + " && exec env ASAN_OPTIONS=detect_leaks=0 " +
                           (limit > 0 ? "timeout " + std::to_string(limit) + " " : std::string()) +
-                          "mpirun --oversubscribe -np " + std::to_string(ranks) + " " + quoted(COLLIDESCOPE_BIN);
+                          "mpirun --oversubscribe " +
+                          (sigkill_timeout > 0 ? "--mca odls_base_sigkill_timeout " + std::to_string(sigkill_timeout) + " " : std::string()) +
+                          "-np " + std::to_string(ranks) + " " + quoted(COLLIDESCOPE_BIN);
     for (const std::string& arg : args) command += ' ' + quoted(arg);
     return command + " > mpi.stdout 2> mpi.stderr";
 }

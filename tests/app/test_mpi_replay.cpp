@@ -136,6 +136,10 @@ TEST(MpiCheck, RankZeroPrintsOneTotalLineInTheSerialForm) {
 // SIGINT once `ready()` holds, as Ctrl-C at a terminal does (the ranks are in process groups of
 // their own; Open MPI 4.1 passes it on to them as SIGTERM, docs/how-to/mpi.md), and returns mpirun's
 // wait status. Fails the test when the run ended before `ready()` or still ran after 240 s.
+// mpirun's wait before it passes a SIGINT on as SIGTERM, and again before SIGKILL: longer than
+// Open MPI's one second, so a loaded CI machine finishes the frame and closes the outputs in it.
+constexpr int kGraceSeconds = 3;
+
 int sigint_to_mpirun_when(const std::string& command, const std::function<bool()>& ready) {
     const pid_t mpirun = testing_mpi::spawn_shell(command);
     EXPECT_GT(mpirun, 0);
@@ -160,13 +164,16 @@ int sigint_to_mpirun_when(const std::string& command, const std::function<bool()
 TEST(MpiInterrupt, SigintToMpirunStopsEveryRankAfterItsFrameAndKeepsTheParts) {
     COLLIDESCOPE_REQUIRE_MPI();
     TempDir dir;
-    // C's 200 frames at its large preset, 100 a rank, some 75 ms a frame here (at the default
+    // C's 200 frames at its large preset, 100 a rank, some 100 ms a frame here (at the default
     // preset, about 10 ms a frame since the traversal between objects went wide, rank 1 once
     // finished its block before mpirun passed the SIGINT on, on CI). A small writer queue keeps
-    // the writer close behind, so a rank closes its part within mpirun's grace period.
+    // the writer close behind. mpirun's grace is three seconds, not its default one: on CI, with
+    // another test on both cores, the ranks (whose writers run at nice 10) were once killed
+    // before they closed their parts, and printed nothing. The SIGTERM then comes about 3.5 s
+    // after the start, near frame 35 of a block of about 11 s here.
     const std::string command = testing_mpi::mpirun_command(
         2, {"record", "--scene", "C:large", "--method", "aabb", "--threads", "1", "--queue-memory", "2M", "-q", "-o", "run.h5"},
-        dir.path(), 0);
+        dir.path(), 0, kGraceSeconds);
     const int status = sigint_to_mpirun_when(command, [&] {
         return frames_complete_now(dir / "run.h5.parts" / "rank0.h5") >= 3 && frames_complete_now(dir / "run.h5.parts" / "rank1.h5") >= 3;
     });
@@ -207,7 +214,7 @@ TEST(MpiInterrupt, SigintToMpirunStopsACheckWithOnePartialOutputAndOneTotalLine)
     const std::vector<testing::FramePair> serial = testing::parse_pairs_tsv(testing::read_text(dir / "serial.tsv"));
     // Each rank logs a line per frame: SIGINT once rank 0 finished frame 8 and rank 1 frame 103
     // (both have pairs by then: C has none before frame 5, at either preset).
-    const int status = sigint_to_mpirun_when(testing_mpi::mpirun_command(2, with(check, {"--pairs", "pairs.tsv"}), dir.path(), 0),
+    const int status = sigint_to_mpirun_when(testing_mpi::mpirun_command(2, with(check, {"--pairs", "pairs.tsv"}), dir.path(), 0, kGraceSeconds),
                                              [&] {
                                                  const std::string err = testing::read_text(dir / "mpi.stderr");
                                                  return err.find("frame 8:") != std::string::npos &&
