@@ -1,5 +1,5 @@
 // Between-frames detection against its reference on whole scenes of the kinds the product is
-// for: the cloth family (draped and crumpled cloth with self-contact, small presets), a thesis
+// for: the cloth family (draped and sliding cloth with self-contact, small presets), a thesis
 // data set, dense coplanar contact, and the dancer of assimp-testmodels.
 // No pair the reference finds within 1e-12 is missed; every pair reported and resolved is one
 // the reference reports at the same tolerance; pass-throughs agree. The reference gets a small
@@ -69,10 +69,13 @@ int compare_with_reference(const Scene& scene, bool self, std::uint32_t first, s
     return pass_throughs;
 }
 
+// The drape's intervals 2 and 3 (3 is where the cloth reaches the body) and the slide's first.
+// Not the crumple: its near-contacts lie closer than the fine reference settles in its box
+// budget (none of 661 settled over intervals 2-4, and the fast path reported none), so it
+// compared nothing there, and cost more than half a minute.
 TEST(BetweenFramesScenes, ClothFamilyMatchesTheReference) {
-    EXPECT_GT(compare_with_reference(make_builtin_scene("cloth-drape:small"), true, 0, 4, "cloth-drape:small"), 0);
-    compare_with_reference(make_builtin_scene("cloth-crumple:small"), true, 2, 3, "cloth-crumple:small");
-    compare_with_reference(make_builtin_scene("cloth-slide:small"), true, 0, 2, "cloth-slide:small");
+    EXPECT_GT(compare_with_reference(make_builtin_scene("cloth-drape:small"), true, 2, 2, "cloth-drape:small"), 0);
+    EXPECT_GT(compare_with_reference(make_builtin_scene("cloth-slide:small"), true, 0, 1, "cloth-slide:small"), 0);
 }
 
 TEST(BetweenFramesScenes, DenseCoplanarContactMatchesTheReference) {

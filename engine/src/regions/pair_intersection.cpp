@@ -157,7 +157,9 @@ Piece crossing(const Triangle& a, const TriIndices& ia, const Triangle& b, const
         // More than two distinct features (a degenerate pair): the two outermost along the line.
         const auto by_position = [&](const End& x, const End& y) { return direction.dot(x.point) < direction.dot(y.point); };
         const auto [lo, hi] = std::minmax_element(ends.begin(), ends.begin() + count, by_position);
-        ends = {*lo, *hi};
+        const End first = *lo, last = *hi;
+        ends[0] = first;
+        ends[1] = last;
         count = 2;
     }
     if (count == 1) {
