@@ -170,7 +170,7 @@ std::map<TrianglePair, Reported> by_pair(const IntervalResult& r) {
 
 TEST(BetweenFrames, EqualsTheReferenceOnRandomScenesAtOneTwoAndFourThreads) {
     int pass_throughs = 0, contacts = 0;
-    for (const std::uint64_t seed : {11u, 12u, 13u, 14u, 15u, 16u}) {
+    for (const std::uint64_t seed : {11u, 12u, 13u, 14u}) {
         std::printf("[ seed     ] BetweenFrames random scene: seed %llu\n", static_cast<unsigned long long>(seed));
         testing::RandomSceneConfig config;
         config.objects = 3;
