@@ -2,6 +2,7 @@
 """What `check --regions` adds to a `check` run, per built-in scene.
 
 Usage: regions_cost.py [SCENE[:PRESET] ...] [--runs 3] [--threads 2] [--out FILE.jsonl]
+                       [--binary COLLIDESCOPE]
 
 For each scene, runs `collidescope check --scene S -q --exit-zero --threads T` with and without
 `--regions /dev/null`, alternating which goes first, --runs times each. Reports the median wall
@@ -9,7 +10,8 @@ time of each, the median of check's own total (the sum of its frames' `total` ms
 total line), and the regions' cost as (wall with - wall without) / check total: what finding,
 following and writing the regions adds to the frames' time, writing included; and the time check reports for finding and following
 them alone, against the same total. Default scenes: every built-in
-scene at its default preset.
+scene at its default preset. --binary runs another build (an older commit's, for an A/B in
+one sitting); the default is build/app/collidescope of this checkout.
 """
 import argparse
 import json
@@ -21,13 +23,13 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-BIN = os.path.join(ROOT, "build", "app", "collidescope")
+BIN = [os.path.join(ROOT, "build", "app", "collidescope")]  # --binary replaces it
 SCENES = ["A", "B", "C", "D", "E1", "E2", "E3", "E4", "demo", "cloth-rest", "cloth-drape", "cloth-crumple",
           "cloth-slide", "contact-layers", "contact-spheres", "contact-rods", "contact-rollers", "coplanar-stack"]
 
 
 def run(scene, threads, regions):
-    command = [BIN, "check", "--scene", scene, "-q", "--exit-zero", "--threads", str(threads)]
+    command = [BIN[0], "check", "--scene", scene, "-q", "--exit-zero", "--threads", str(threads)]
     if regions:
         command += ["--regions", "/dev/null"]
     start = time.perf_counter()
@@ -46,7 +48,10 @@ def main():
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--out")
+    parser.add_argument("--binary", help="the collidescope to measure (default build/app/collidescope)")
     args = parser.parse_args()
+    if args.binary:
+        BIN[0] = os.path.abspath(args.binary)
     rows = []
     print("%-24s %7s %11s %10s %10s %10s %8s %10s %8s" % ("scene", "frames", "pairs/frame", "check ms", "wall s", "+regions s",
                                                         "added", "regions ms", "compute"))
