@@ -5,6 +5,7 @@
 
 #include "bvh/bvh_helpers.hpp"
 #include "support/scene_builders.hpp"
+#include "support/sweep_size.hpp"
 
 #include "bvh/bvh.hpp"
 #include "bvh/traverse.hpp"
@@ -128,7 +129,7 @@ TEST(WideTraverse, CandidatesAreTheBinaryTraversalsAndTheOverlappingBoxes) {
     std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
     std::mt19937_64 rng(seed);
     int with_candidates = 0;  // frames whose meshes overlap somewhere (most of them)
-    for (int round = 0; round < 8; ++round) {
+    for (int round = 0; round < testing::sweep_size(8, 2); ++round) {
         SCOPED_TRACE("round " + std::to_string(round));
         MeshData a = round % 2 == 0 ? testing::grid_soup(rng, 700, 8) : testing::crumpled_sheet(rng, 18, 1.0, true);
         MeshData b = testing::translated(round % 4 < 2 ? testing::grid_soup(rng, 500, 8)

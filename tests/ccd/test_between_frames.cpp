@@ -4,6 +4,7 @@
 // self-contact) at 1, 2 and 4 threads, seeds printed.
 
 #include "support/scene_builders.hpp"
+#include "support/sweep_size.hpp"
 
 #include "collidescope/between_frames.hpp"
 #include "collidescope/error.hpp"
@@ -170,7 +171,7 @@ std::map<TrianglePair, Reported> by_pair(const IntervalResult& r) {
 
 TEST(BetweenFrames, EqualsTheReferenceOnRandomScenesAtOneTwoAndFourThreads) {
     int pass_throughs = 0, contacts = 0;
-    for (const std::uint64_t seed : {11u, 12u, 13u, 14u}) {
+    for (const std::uint64_t seed : testing::sweep_of<std::uint64_t>({11, 12, 13, 14}, 2)) {
         std::printf("[ seed     ] BetweenFrames random scene: seed %llu\n", static_cast<unsigned long long>(seed));
         testing::RandomSceneConfig config;
         config.objects = 3;

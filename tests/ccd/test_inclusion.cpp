@@ -6,6 +6,7 @@
 
 #include "ccd/inclusion.hpp"
 #include "ccd/interval_reference.hpp"
+#include "support/sweep_size.hpp"
 
 #include <gtest/gtest.h>
 
@@ -144,7 +145,7 @@ Vec3 random_point(std::mt19937_64& rng, double scale) {
 // point) is put on the face (or the second edge's point) plus an offset of 0 (touching, up to
 // rounding), a small one (a near miss or a graze) or a large one.
 TEST(Inclusion, FastAgreesWithTheReferenceOnRandomQueries) {
-    for (const std::uint64_t seed : {1u, 2u, 3u}) {
+    for (const std::uint64_t seed : testing::sweep_of<std::uint64_t>({1, 2, 3}, 3)) {
         std::printf("[ seed     ] Inclusion random queries: seed %llu\n", static_cast<unsigned long long>(seed));
         std::mt19937_64 rng(seed);
         std::uniform_real_distribution<double> unit(0, 1);

@@ -7,6 +7,7 @@
 
 #include "support/brute_reference.hpp"
 #include "support/scene_builders.hpp"
+#include "support/sweep_size.hpp"
 
 #include "collidescope/datasets.hpp"
 #include "collidescope/error.hpp"
@@ -86,7 +87,7 @@ INSTANTIATE_TEST_SUITE_P(Small, DataSets, ::testing::Values("A", "B", "C", "D", 
                          [](const auto& param_info) { return param_info.param; });
 
 TEST(HybridAndAdaptive, RandomScenesWithAndWithoutSelfCollision) {
-    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    for (std::uint64_t seed = 1; seed <= static_cast<std::uint64_t>(testing::sweep_size(10, 2)); ++seed) {
         std::cout << "[ seed     ] " << seed << '\n';
         const Scene scene = testing::random_scene(seed, {4, 3, 30, 4});
         for (const bool self : {false, true}) {

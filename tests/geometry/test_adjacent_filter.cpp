@@ -7,6 +7,7 @@
 #include "geometry/adjacent_filter.hpp"
 #include "support/random_triangles.hpp"
 #include "support/rational_reference.hpp"
+#include "support/sweep_size.hpp"
 
 #include <gtest/gtest.h>
 
@@ -60,7 +61,7 @@ TEST(AdjacentFilter, ConstructedCases) {
 // collinear, coincident: the degenerate sets) or float32 points in general position.
 TEST(AdjacentFilter, ApartOnlyWhereTheRuleSaysApart) {
     const std::uint64_t seed = 0xAD1A;
-    const int count = 40000;
+    const int count = testing::sweep_size(40000);
     std::mt19937_64 rng(seed);
     int apart = 0, colliding = 0;
     for (int n = 0; n < count; ++n) {

@@ -7,6 +7,7 @@
 #include "collidescope/geometry.hpp"
 #include "support/rational_reference.hpp"
 #include "support/random_triangles.hpp"
+#include "support/sweep_size.hpp"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
@@ -142,7 +143,7 @@ TEST(DegenerateSets, TriangleTestMatchesRationalReference) {
     for (const PointPool& pool : degenerate_pools()) {
         std::uniform_int_distribution<std::size_t> pick(0, pool.points.size() - 1);
         int hits = 0;
-        const int count = 3000;
+        const int count = testing::sweep_size(3000);
         for (int n = 0; n < count; ++n) {
             std::array<Vec3, 3> a, b;
             for (Vec3& p : a) p = pool.points[pick(rng)];
@@ -168,7 +169,7 @@ TEST(DegenerateSets, SelfRuleMatchesRationalReference) {
         std::uniform_int_distribution<std::size_t> pick(0, pool.points.size() - 1);
         std::uniform_int_distribution<int> coin(0, 1);
         int hits = 0;
-        const int count = 3000;
+        const int count = testing::sweep_size(3000);
         for (int n = 0; n < count; ++n) {
             // Indices 0, 1 shared (or only 0), 2 and 3 private; positions by index.
             const bool share_edge = coin(rng) == 1;

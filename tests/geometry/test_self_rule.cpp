@@ -4,6 +4,7 @@
 #include "collidescope/geometry.hpp"
 #include "support/random_triangles.hpp"
 #include "support/rational_reference.hpp"
+#include "support/sweep_size.hpp"
 
 #include <gtest/gtest.h>
 
@@ -60,7 +61,7 @@ TEST(SelfRule, ConstructedCases) {
 
 TEST(SelfRule, MatchesRationalReferenceOnRandomAdjacentPairs) {
     const std::uint64_t seed = 0x5E1F;
-    const int count = 20000;
+    const int count = testing::sweep_size(20000);
     std::mt19937_64 rng(seed);
     int hits = 0;
     for (int n = 0; n < count; ++n) {

@@ -1,9 +1,11 @@
 // triangles_intersect against constructed cases with known answers, and against the
-// rational LP reference (tests/support) on 100,000 seeded near-contact pairs.
+// rational LP reference (tests/support) on 100,000 seeded near-contact pairs (the first
+// 25,000 in a sanitizer build, support/sweep_size.hpp).
 
 #include "collidescope/geometry.hpp"
 #include "support/random_triangles.hpp"
 #include "support/rational_reference.hpp"
+#include "support/sweep_size.hpp"
 
 #include <gtest/gtest.h>
 
@@ -102,7 +104,7 @@ TEST(TriangleTest, ConstructedCasesNear1e30And1eMinus30) {
 
 TEST(TriangleTest, MatchesRationalReferenceOnNearContactPairs) {
     const std::uint64_t seed = 0xC011D35C0;
-    const int count = 100000;
+    const int count = testing::sweep_size(100000);
     std::mt19937_64 rng(seed);
     std::map<std::string, std::pair<int, int>> per_kind;  // kind -> (hits, total)
     int hits = 0;

@@ -9,6 +9,7 @@
 #include "recording_helpers.hpp"
 
 #include "support/cli_runner.hpp"
+#include "support/sweep_size.hpp"
 #include "app/error_cases.hpp"
 #include "mesh/temp_files.hpp"
 
@@ -40,13 +41,9 @@ TEST(RecorderCorruption, RandomBytesNeverCrashTheReader) {
     ASSERT_GT(original.size(), 4096u);
     constexpr unsigned k_seed = 6150;
     // Each trial starts `collidescope validate`, 0.1 s here and about three times that under
-    // AddressSanitizer: a sanitizer build runs the first 300 trials of the same sequence, which
-    // keeps the CI run's sanitizer phase within its time (docs/how-to/sanitizers.md).
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-    constexpr int k_trials = 300;
-#else
-    constexpr int k_trials = 1000;
-#endif
+    // AddressSanitizer: a sanitizer build runs the first 200 trials of the same sequence, which
+    // keeps the CI run's sanitizer phase within its time (support/sweep_size.hpp).
+    constexpr int k_trials = testing::sweep_size(1000, 5);
     constexpr std::size_t k_bytes = 32;
     std::printf("corruption test: seed %u, %d trials of %zu random bytes\n", k_seed, k_trials, k_bytes);
     std::mt19937_64 rng(k_seed);

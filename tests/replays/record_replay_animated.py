@@ -32,6 +32,7 @@ import struct
 import subprocess
 import sys
 import tempfile
+import time
 
 import h5py
 import numpy
@@ -132,12 +133,14 @@ def check_round_trip(binary, model, path, work, timeout):
 def run_one(binary, models, model, timeout):
     path = os.path.join(models, model)
     work = tempfile.mkdtemp(prefix="collidescope_anim_")
+    started = time.monotonic()
     try:
         if model in REFUSED:
             return model, check_refused(binary, model, path, work, timeout, REFUSED[model])
         return model, check_round_trip(binary, model, path, work, timeout)
     finally:
         shutil.rmtree(work, ignore_errors=True)
+        print("%s: %.1f s" % (model, time.monotonic() - started), flush=True)
 
 
 def discover(binary, models, jobs):
