@@ -66,15 +66,4 @@ if(COLLIDESCOPE_SANITIZE STREQUAL "address" AND COLLIDESCOPE_SANITIZE_HOT_OPTIMI
       target_compile_options(${target} PRIVATE ${COLLIDESCOPE_SANITIZE_HOT_OPTIMIZATION})
     endif()
   endforeach()
-  # And the test files whose own loops are the work (a winding-number reference, the trees'
-  # box-pair and sort checks): at -Og their tests ran 1.2 to 3 times longer than at -O1
-  # (BvhTraverse.CandidatesAreExactlyTheOverlappingTriangleBoxes 9 -> 27 s in a cold CI run).
-  if(COLLIDESCOPE_TESTS)
-    set(hot_tests regions/test_penetration.cpp bvh/bvh_helpers.cpp bvh/test_refit_traverse.cpp
-      bvh/test_wide_tree.cpp)
-    list(TRANSFORM hot_tests PREPEND ${CMAKE_SOURCE_DIR}/tests/)
-    set_source_files_properties(${hot_tests}
-      DIRECTORY ${CMAKE_SOURCE_DIR}/tests
-      PROPERTIES COMPILE_OPTIONS ${COLLIDESCOPE_SANITIZE_HOT_OPTIMIZATION})
-  endif()
 endif()
