@@ -2,6 +2,7 @@
 // files read back as exactly the generated frames, and bench writes every file it promises.
 
 #include "support/cli_runner.hpp"
+#include "support/sweep_size.hpp"
 #include "mesh/temp_files.hpp"
 
 #include "bench_report.hpp"
@@ -105,10 +106,12 @@ TEST(Export, UnknownSceneIsAnErrorNamingTheKnownOnes) {
 }
 
 // bench on two small scenes writes frames.csv, summary.csv, a plot per scene and index.html,
-// prints the table and says the methods agreed.
+// prints the table and says the methods agreed. Two repeats (one in a sanitizer build: the files
+// hold a row per frame and method whatever the repeats).
 TEST(Bench, TwoSmallScenesProduceEveryFile) {
     TempDir dir;
-    const auto result = run_cli({"bench", "--scenes", "C,D", "--preset", "small", "--repeat", "2", "-o", "out"},
+    const std::string repeats = std::to_string(testing::sweep_size(2, 2));
+    const auto result = run_cli({"bench", "--scenes", "C,D", "--preset", "small", "--repeat", repeats, "-o", "out"},
                                 dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
     const std::filesystem::path out = dir.path() / "out";
