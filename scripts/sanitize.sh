@@ -15,8 +15,8 @@ kind=${1:-}
 # builds and both suites). -Og, which compiles under ASan and UBSan's checks in about half the
 # time of -O1 (tests/app/test_named_options.cpp: 26.6 s at -O1, 14.0 s at -Og; -O0 is no
 # faster and runs slower); the address build compiles the engine and the tests' references at
-# -O1 all the same (the tests run the exact narrow phase over many pairs; -O2 took twice the
-# engine's compile time under the sanitizers for a suite some 10% faster;
+# -O1 all the same (the tests run the exact narrow phase over many pairs; -O2 took 1.75 times
+# the engine's compile time under the sanitizers, for no measurable gain in the suite's time;
 # tests/sanitize/sanitize.cmake). ThreadSanitizer at -O1 everywhere: its runtime dominates.
 case "$kind" in
   address) build=build-asan; flags="-Og -g1 -DNDEBUG"; hot=-O1 ;;

@@ -58,8 +58,9 @@ collidescope_sanitize_executables(${CMAKE_SOURCE_DIR})
 # test file's compile 2.2 times slower at -O2 than at -O1: 40 against 18 s for
 # tests/app/test_check_outputs.cpp; the whole build took about 26 of CI's 90 minutes at -O2;
 # -Og compiles in about half the time of -O1 again, docs/how-to/sanitizers.md),
-# and the code the suite spends its time in at -O1 (scripts/sanitize.sh): the engine's loops, and the support
-# library's references (brute force, exact rational tests) that the tests compare them with.
+# and the code the suite spends its time in at -O1 (scripts/sanitize.sh): the engine's loops,
+# and the support library's references (brute force, exact rational tests) that the tests
+# compare them with.
 if(COLLIDESCOPE_SANITIZE STREQUAL "address" AND COLLIDESCOPE_SANITIZE_HOT_OPTIMIZATION)
   foreach(target collidescope_engine collidescope_test_support)
     if(TARGET ${target})
