@@ -11,9 +11,12 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <memory>
+#include <new>
 #include <numeric>
 #include <utility>
 
@@ -170,6 +173,32 @@ std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::spa
     return groups;
 }
 
+// A frame's pieces, one slot per pair, kept from call to call on its thread and never
+// initialised: only a segment's piece, or every piece of a measured region, is written (a
+// coplanar frame writes almost none) and only those are read. Memory touched for the first time
+// (the kernel zeroing its pages) cost as much as filling it: value-initialising the slots of a
+// growing vector made the first two frames of cloth-slide 6x dearer than the rest. Growing
+// copies nothing (a frame's pieces are that frame's only).
+class PieceBuffer {
+public:
+    std::span<regions::Piece> get(std::size_t pairs) {
+        if (pairs > m_capacity) {
+            m_data.reset();
+            m_capacity = 2 * pairs;
+            m_data.reset(static_cast<regions::Piece*>(
+                ::operator new(m_capacity * sizeof(regions::Piece), std::align_val_t{alignof(regions::Piece)})));
+        }
+        return {m_data.get(), pairs};
+    }
+
+private:
+    struct Free {
+        void operator()(regions::Piece* p) const { ::operator delete(p, std::align_val_t{alignof(regions::Piece)}); }
+    };
+    std::unique_ptr<regions::Piece, Free> m_data;
+    std::size_t m_capacity = 0;
+};
+
 // What a region gathers from its pairs' pieces: their box, the coplanar area, and its
 // segments by their ends' keys (a segment two pairs report with the same ends, an edge lying in
 // the other surface seen from both of its triangles, counts once).
@@ -205,11 +234,11 @@ Gathered intersect_region(const Frame& frame, std::span<const TrianglePair> pair
                 gathered.box.extend(piece.ends[1]);
                 gathered.coplanar_area += piece.area;
                 if (piece.kind == PairIntersection::Kind::Segment) {
-                    pieces[i] = piece;
+                    std::construct_at(&pieces[i], piece);
                     const std::uint64_t h0 = regions::key_hash(piece.keys[0]), h1 = regions::key_hash(piece.keys[1]);
                     gathered.segments.push_back({std::min(h0, h1) * 31 + std::max(h0, h1), i});
                 } else if (keep_all) {
-                    pieces[i] = piece;  // only then: a dense frame's pieces are gigabytes a second
+                    std::construct_at(&pieces[i], piece);  // only then: a dense frame's pieces are gigabytes a second
                 }
             }
             return gathered;
@@ -218,6 +247,30 @@ Gathered intersect_region(const Frame& frame, std::span<const TrianglePair> pair
             a.join(b);
             return a;
         });
+}
+
+// The triangles of a region's pairs on side a (`a`), side b (`b`) or both, each once, sorted:
+// marked, then listed by a scan of the marks where they are many (dense contact marks much of
+// a mesh, and sorting them was a twentieth of the regions' time on cloth-slide), else sorted.
+std::vector<std::uint32_t> side_triangles(std::span<const TrianglePair> pairs, std::span<const std::uint32_t> indices,
+                                          std::size_t triangle_count, bool a, bool b) {
+    thread_local regions::StampedMarks marks;
+    marks.next(triangle_count);
+    std::vector<std::uint32_t> side;
+    for (const std::uint32_t i : indices) {
+        if (a && marks.mark(pairs[i].tri_a)) side.push_back(pairs[i].tri_a);
+        if (b && marks.mark(pairs[i].tri_b)) side.push_back(pairs[i].tri_b);
+    }
+    if (std::is_sorted(side.begin(), side.end())) return side;
+    if (side.size() < triangle_count / 16) {
+        std::sort(side.begin(), side.end());
+        return side;
+    }
+    std::size_t k = 0;
+    for (std::size_t t = 0; t < triangle_count; ++t) {
+        if (marks.marked(t)) side[k++] = static_cast<std::uint32_t>(t);
+    }
+    return side;
 }
 
 Region describe(const Frame& frame, std::span<const TrianglePair> pairs, std::span<regions::Piece> pieces,
@@ -233,17 +286,13 @@ Region describe(const Frame& frame, std::span<const TrianglePair> pairs, std::sp
     region.box = gathered.box;
     region.coplanar_area = gathered.coplanar_area;
     auto& segments = gathered.segments;
-    std::vector<std::uint32_t>& side_a = region.triangles_a;
-    std::vector<std::uint32_t>& side_b = region.triangles_b;
-    const bool self = region.obj_a == region.obj_b;
-    // Each side's triangles once (a triangle is in many pairs of dense contact), sorted after.
-    thread_local regions::StampedMarks marks_a, marks_b;
-    marks_a.next(frame.objects[region.obj_a].triangle_count());
-    marks_b.next(frame.objects[region.obj_b].triangle_count());
-    regions::StampedMarks& other = self ? marks_a : marks_b;
-    for (const std::uint32_t i : indices) {
-        if (marks_a.mark(pairs[i].tri_a)) side_a.push_back(pairs[i].tri_a);
-        if (other.mark(pairs[i].tri_b)) (self ? side_a : side_b).push_back(pairs[i].tri_b);
+    // Each side's triangles, the two sides at once (self-contact: one side, both triangles).
+    if (region.obj_a == region.obj_b) {
+        region.triangles_a = side_triangles(pairs, indices, frame.objects[region.obj_a].triangle_count(), true, true);
+    } else {
+        tbb::parallel_invoke(
+            [&] { region.triangles_a = side_triangles(pairs, indices, frame.objects[region.obj_a].triangle_count(), true, false); },
+            [&] { region.triangles_b = side_triangles(pairs, indices, frame.objects[region.obj_b].triangle_count(), false, true); });
     }
     // A segment reported again with the same ends (keys with features) counts once: the first.
     const auto keys = [&](const Gathered::Segment& x) {
@@ -261,8 +310,6 @@ Region describe(const Frame& frame, std::span<const TrianglePair> pairs, std::sp
         region.curve_length += (piece.ends[1] - piece.ends[0]).norm();
         unique_segments.push_back(segments[k].pair);
     }
-    if (!std::is_sorted(side_a.begin(), side_a.end())) std::sort(side_a.begin(), side_a.end());
-    if (!std::is_sorted(side_b.begin(), side_b.end())) std::sort(side_b.begin(), side_b.end());
     if (options.curves) {
         region.curves = regions::chain_curves(pieces, unique_segments);
         for (const IntersectionCurve& curve : region.curves) region.loops += curve.closed ? 1 : 0;
@@ -275,12 +322,8 @@ Region describe(const Frame& frame, std::span<const TrianglePair> pairs, std::sp
 
 std::vector<Region> find_regions(const Frame& frame, std::span<const TrianglePair> pairs, const RegionOptions& options) {
     if (pairs.empty()) return {};
-    // Kept from call to call on this thread: a dense frame's pieces are hundreds of megabytes,
-    // and memory touched for the first time (the kernel zeroing its pages) cost as much as
-    // filling it.
-    thread_local std::vector<regions::Piece> kept;
-    if (kept.size() < pairs.size()) kept.resize(pairs.size());
-    const std::span<regions::Piece> pieces(kept.data(), pairs.size());
+    thread_local PieceBuffer kept;
+    const std::span<regions::Piece> pieces = kept.get(pairs.size());
     std::vector<std::vector<std::uint32_t>> groups = group_pairs(frame, pairs);
     std::vector<Region> result(groups.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, groups.size(), 1), [&](const auto& range) {

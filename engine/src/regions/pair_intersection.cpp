@@ -369,18 +369,24 @@ Piece intersect(const Frame& frame, const TrianglePair& pair, std::vector<Vec3>*
     }
     const std::array<int, 3> sa = plane_sides(b, a, fast);
     const std::array<int, 3> sb = plane_sides(a, b, fast);
+    const auto with_sides = [&](Piece piece) {
+        for (int k = 0; k < 3; ++k) {
+            piece.sides_a[k] = static_cast<std::int8_t>(sa[k]);
+            piece.sides_b[k] = static_cast<std::int8_t>(sb[k]);
+        }
+        return piece;
+    };
     const bool flat_a = sa == std::array<int, 3>{0, 0, 0};
     const bool flat_b = sb == std::array<int, 3>{0, 0, 0};
-    if (flat_a || flat_b) return coplanar(a, b, polygon);
+    if (flat_a || flat_b) return with_sides(coplanar(a, b, polygon));
     const TriIndices& ia = object_a.topology->triangles[pair.tri_a];
     const TriIndices& ib = object_b.topology->triangles[pair.tri_b];
     Piece piece;
     if (fast && sa[0] * sa[1] * sa[2] != 0 && sb[0] * sb[1] * sb[2] != 0 && generic_crossing(a, ia, b, ib, pair, sa, sb, piece)) {
         if (polygon) polygon->assign(piece.ends.begin(), piece.ends.end());
-        return piece;
+        return with_sides(piece);
     }
-    return crossing(a, object_a.topology->triangles[pair.tri_a], b, object_b.topology->triangles[pair.tri_b], pair, sa,
-                    sb, polygon);
+    return with_sides(crossing(a, ia, b, ib, pair, sa, sb, polygon));
 }
 
 }  // namespace collidescope::regions

@@ -56,6 +56,11 @@ inline std::uint64_t key_hash(const EndKey& key) {
 /// coplanar polygon by its area and box.
 struct Piece {
     PairIntersection::Kind kind = PairIntersection::Kind::Point;
+    /// The exact sides (orient3d's signs) of a's corners against b's plane, and of b's against
+    /// a's, as the intersection decided them (all 0 for triangles in one axis-aligned plane):
+    /// the penetration measure reads them instead of deciding them again. In the padding
+    /// after `kind`: no larger.
+    std::array<std::int8_t, 3> sides_a{}, sides_b{};
     std::array<Vec3, 2> ends;      ///< Point: ends[0]; Segment: both; Polygon: the box's min and max
     std::array<EndKey, 2> keys;    ///< Segment only
     double area = 0;               ///< Polygon only

@@ -74,8 +74,23 @@ struct TriangleMeasure {
     std::array<Status, 3> corners{Status::Unknown, Status::Unknown, Status::Unknown};
 };
 
+// Where a segment meets the border of the triangle.
+struct Event {
+    double position;
+    double change;  ///< +: the walk enters Y here
+    Vec3 point;
+};
+
+// measure_triangle's working arrays, kept from triangle to triangle (allocating them for
+// each was a fifth of its time on small frames).
+struct BorderWalk {
+    std::vector<Event> events;
+    std::vector<double> after;
+};
+
 // The part of triangle `tri` of X inside Y, from its segments.
-TriangleMeasure measure_triangle(const ObjectFrame& x, std::uint32_t tri, std::span<const Oriented> segments) {
+TriangleMeasure measure_triangle(const ObjectFrame& x, std::uint32_t tri, std::span<const Oriented> segments,
+                                 BorderWalk& walk) {
     TriangleMeasure result;
     const std::array<Vec3, 3> c = x.corners(tri);
     const Vec3 normal = (c[1] - c[0]).cross(c[2] - c[0]);
@@ -86,12 +101,8 @@ TriangleMeasure measure_triangle(const ObjectFrame& x, std::uint32_t tri, std::s
     const auto contour = [&](const Vec3& p, const Vec3& q) { return 0.5 * unit.dot((p - origin).cross(q - origin)); };
 
     double area = 0;
-    struct Event {
-        double position;
-        double change;  ///< +: the walk enters Y here
-        Vec3 point;
-    };
-    std::vector<Event> events;
+    std::vector<Event>& events = walk.events;
+    events.clear();
     for (const Oriented& s : segments) {
         area += s.weight * contour(s.from, s.to);
         if (s.from_position) events.push_back({*s.from_position, s.from_change, s.from});
@@ -107,7 +118,8 @@ TriangleMeasure measure_triangle(const ObjectFrame& x, std::uint32_t tri, std::s
     std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.position < b.position; });
     // Status after each event, up to the unknown status at corner 0: the lowest prefix sum is
     // outside.
-    std::vector<double> after(events.size());
+    std::vector<double>& after = walk.after;
+    after.resize(events.size());
     double sum = 0, lowest = 0;
     for (std::size_t k = 0; k < events.size(); ++k) {
         sum += events[k].change;
@@ -202,13 +214,13 @@ public:
         double area = 0;
         std::vector<std::uint32_t> inside;  // X's vertices inside Y, in the order reached
         std::vector<std::uint32_t> from;    // per inside vertex: the one the flood came from (none: k_none)
-        std::vector<Vec3> seed_witness;     // per inside vertex the walk found: a near point of Y's surface
+        std::vector<std::uint32_t> seed_face;  // per inside vertex the walk found: a near face of Y
         constexpr std::uint32_t k_none = UINT32_MAX;
-        const auto reach = [&](std::uint32_t v, std::uint32_t parent, const Vec3& witness) {
+        const auto reach = [&](std::uint32_t v, std::uint32_t parent, std::uint32_t face) {
             if (!m_scratch.vertex.mark(v)) return;
             inside.push_back(v);
             from.push_back(parent);
-            seed_witness.push_back(witness);
+            seed_face.push_back(face);
         };
         std::vector<Oriented> segments;
         std::map<std::uint32_t, double> touching;  // triangles meeting Y without a segment: coplanar area
@@ -217,7 +229,7 @@ public:
             std::size_t end = begin;
             while (end < by_triangle.size() && tri_x(m_pairs[by_triangle[end]]) == tri) ++end;
             orient(xo, yo, tri, std::span(by_triangle).subspan(begin, end - begin), segments);
-            const TriangleMeasure t = measure_triangle(xo, tri, segments);
+            const TriangleMeasure t = measure_triangle(xo, tri, segments, m_walk);
             if (segments.empty()) {
                 // Touching Y only at points or in its plane: the rest of the triangle lies on
                 // one side, which the flood finds (it counts the triangle, less the coplanar
@@ -229,16 +241,16 @@ public:
             area += t.inside_area;
             for (int k = 0; k < 3; ++k) {
                 if (t.corners[k] != Status::Inside) continue;
-                // Its witness: the nearest point of the faces of Y its triangle meets.
+                // Its witness: the nearest of the faces of Y its triangle meets.
                 const Vec3& corner = xo.vertices[xo.topology->triangles[tri][k]];
-                Vec3 witness = corner;
+                std::uint32_t witness = tri_y(m_pairs[by_triangle[begin]]);
                 double nearest = std::numeric_limits<double>::infinity();
                 for (std::size_t j = begin; j < end; ++j) {
-                    const auto f = yo.corners(tri_y(m_pairs[by_triangle[j]]));
-                    const Vec3 q = closest_point_on_triangle(corner, f[0], f[1], f[2]);
-                    if ((q - corner).squaredNorm() < nearest) {
-                        nearest = (q - corner).squaredNorm();
-                        witness = q;
+                    const std::uint32_t face = tri_y(m_pairs[by_triangle[j]]);
+                    const double d = squared_distance(corner, face);
+                    if (d < nearest) {
+                        nearest = d;
+                        witness = face;
                     }
                 }
                 reach(xo.topology->triangles[tri][k], k_none, witness);
@@ -261,27 +273,27 @@ public:
                     continue;
                 }
                 area += full;
-                for (const std::uint32_t w : xo.topology->triangles[t]) reach(w, static_cast<std::uint32_t>(next), Vec3::Zero());
+                for (const std::uint32_t w : xo.topology->triangles[t]) reach(w, static_cast<std::uint32_t>(next), k_none);
             }
         }
         // The deepest. Seeded by the vertex the flood reached last (farthest from the curves),
         // then in flood order, each vertex with an upper bound on its distance to Y: its
-        // distance to a witness, a point of Y's surface (for a corner of a crossed triangle, the
-        // nearest point of the faces that triangle meets; for a vertex the flood reached, its
-        // parent's witness, or the point its own search found). Only a
-        // vertex whose bound exceeds the deepest so far is searched, and that search stops at
-        // the first triangle within the deepest (the distance to it is again an upper bound).
+        // distance to a witness face of Y (for a corner of a crossed triangle, the nearest of
+        // the faces that triangle meets; for a vertex the flood reached, its parent's witness,
+        // or the face its own search found). Only a vertex whose bound exceeds the deepest so
+        // far is searched, and that search stops at the first triangle within the deepest (the
+        // distance to it is again an upper bound).
         double depth = 0;
         if (!inside.empty()) {
             if (!m_distance) m_distance.emplace(*yo.topology, yo.vertices.span());
             depth = (*m_distance)(xo.vertices[inside.back()]);
-            std::vector<Vec3> witness(inside.size());
+            std::vector<std::uint32_t> witness(inside.size());
             for (std::size_t k = 0; k < inside.size(); ++k) {
                 const Vec3& v = xo.vertices[inside[k]];
-                witness[k] = from[k] == k_none ? seed_witness[k] : witness[from[k]];
-                double bound = (v - witness[k]).norm();
+                witness[k] = from[k] == k_none ? seed_face[k] : witness[from[k]];
+                double bound = std::sqrt(squared_distance(v, witness[k]));
                 if (bound > depth) {
-                    Vec3 nearer;
+                    std::uint32_t nearer = witness[k];
                     const double searched = m_distance->beyond(v, depth, &nearer);
                     if (searched < bound) {
                         bound = searched;
@@ -295,31 +307,41 @@ public:
     }
 
 private:
+    // The squared distance from p to face `face` of Y.
+    double squared_distance(const Vec3& p, std::uint32_t face) const {
+        const auto f = m_frame.objects[m_y].corners(face);
+        return (closest_point_on_triangle(p, f[0], f[1], f[2]) - p).squaredNorm();
+    }
+
     std::uint32_t tri_x(const TrianglePair& p) const { return m_x == p.obj_a ? p.tri_a : p.tri_b; }
     std::uint32_t tri_y(const TrianglePair& p) const { return m_x == p.obj_a ? p.tri_b : p.tri_a; }
 
+    // Segments reported with the same two ends' keys: their weights and border changes
+    // summed in the keys' order (first key's end, second key's end), and how many.
+    struct Shared {
+        double weight = 0, first_change = 0, second_change = 0;
+        int count = 0;
+    };
+
     // The segments of triangle `tri`'s pairs `indices`, oriented, each once.
     void orient(const ObjectFrame& xo, const ObjectFrame& yo, std::uint32_t tri, std::span<const std::uint32_t> indices,
-                std::vector<Oriented>& out) const {
+                std::vector<Oriented>& out) {
         out.clear();
         const TriIndices& ids = xo.topology->triangles[tri];
         const auto c = xo.corners(tri);
         const Vec3 normal = (c[1] - c[0]).cross(c[2] - c[0]);
-        // Segments reported with the same two ends' keys: their weights and border changes
-        // summed in the keys' order (first key's end, second key's end), and how many.
-        struct Shared {
-            double weight = 0, first_change = 0, second_change = 0;
-            int count = 0;
-        };
-        // A triangle has a handful of segments: a short list, searched, not a map per triangle.
-        std::vector<std::pair<std::pair<EndKey, EndKey>, Shared>> shared;
+        // A triangle has a handful of segments: a short list, searched, not a map per triangle
+        // (kept from triangle to triangle, as `found` is).
+        std::vector<std::pair<std::pair<EndKey, EndKey>, Shared>>& shared = m_shared;
+        shared.clear();
         const auto group_of = [&](const std::pair<EndKey, EndKey>& keys) -> Shared& {
             for (auto& [k, group] : shared) {
                 if (k == keys) return group;
             }
             return shared.emplace_back(keys, Shared{}).second;
         };
-        std::vector<Oriented> found;
+        std::vector<Oriented>& found = m_found;
+        found.clear();
         for (const std::uint32_t i : indices) {
             const Piece& piece = m_pieces[i];
             if (piece.kind != PairIntersection::Kind::Segment) continue;
@@ -332,8 +354,10 @@ private:
                 std::swap(s.from, s.to);
                 std::swap(s.from_key, s.to_key);
             }
-            // +1 outside F's plane, -1 inside, 0 on it.
-            const auto side = [&](int k) { return -m_outward * orient3d(f[0], f[1], f[2], c[k]); };
+            // +1 outside F's plane, -1 inside, 0 on it: orient3d(F, c[k]), as the intersection
+            // decided it.
+            const std::array<std::int8_t, 3>& sides = m_x == m_pairs[i].obj_a ? piece.sides_a : piece.sides_b;
+            const auto side = [&](int k) { return -m_outward * sides[k]; };
             const auto change = [&](double position, double fallback) {
                 const int corner = static_cast<int>(position);
                 const bool at_corner = position == corner;
@@ -376,6 +400,10 @@ private:
     std::shared_ptr<const MeshShape> m_shape;
     double m_outward = 1;
     std::optional<SurfaceDistance> m_distance;
+    // Working arrays of orient and measure_triangle, kept from triangle to triangle.
+    std::vector<std::pair<std::pair<EndKey, EndKey>, Shared>> m_shared;
+    std::vector<Oriented> m_found;
+    BorderWalk m_walk;
 };
 
 }  // namespace

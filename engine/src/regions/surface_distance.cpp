@@ -102,9 +102,9 @@ SurfaceDistance::~SurfaceDistance() {
     if (m_revision != 0 && m_tree) tree_cache().give(m_revision, std::move(m_tree));
 }
 
-double SurfaceDistance::beyond(const Vec3& p, double bound, Vec3* nearest) const {
+double SurfaceDistance::beyond(const Vec3& p, double bound, std::uint32_t* nearest_face) const {
     double best = std::numeric_limits<double>::infinity();
-    Vec3 best_point = p;
+    std::uint32_t best_face = UINT32_MAX;
     if (m_tree->empty()) return best;
     const double enough = bound > 0 ? bound * bound : -1;  // squared: a triangle this near ends the search
     thread_local std::vector<std::uint32_t> stack;  // kept: a search is short, an allocation was a fifth of it
@@ -116,11 +116,12 @@ double SurfaceDistance::beyond(const Vec3& p, double bound, Vec3* nearest) const
         if (squared_box_distance(node.box, p) > best) continue;
         if (node.is_leaf()) {
             for (std::uint32_t k = node.index; k < node.index + node.count; ++k) {
-                const TriIndices& t = m_triangles[m_tree->triangle_ids[k]];
+                const std::uint32_t face = m_tree->triangle_ids[k];
+                const TriIndices& t = m_triangles[face];
                 const Vec3 q = closest_point_on_triangle(p, m_vertices[t[0]], m_vertices[t[1]], m_vertices[t[2]]);
                 if ((q - p).squaredNorm() < best) {
                     best = (q - p).squaredNorm();
-                    best_point = q;
+                    best_face = face;
                 }
             }
             if (best <= enough) break;
@@ -131,7 +132,7 @@ double SurfaceDistance::beyond(const Vec3& p, double bound, Vec3* nearest) const
         stack.push_back(left_first ? right : left);
         stack.push_back(left_first ? left : right);
     }
-    if (nearest) *nearest = best_point;
+    if (nearest_face && best_face != UINT32_MAX) *nearest_face = best_face;
     return std::sqrt(best);
 }
 

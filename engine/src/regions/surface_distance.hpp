@@ -26,9 +26,9 @@ public:
     double operator()(const Vec3& p) const { return beyond(p, -1); }
     /// The distance from p to the surface when it exceeds `bound`; otherwise some value at most
     /// `bound` (the search stops at the first triangle within it). For the largest distance of
-    /// many points, pass the largest so far: most searches then end early. `nearest`, when not
-    /// null, receives the point of the surface at the distance returned.
-    double beyond(const Vec3& p, double bound, Vec3* nearest = nullptr) const;
+    /// many points, pass the largest so far: most searches then end early. `nearest_face`, when
+    /// not null, receives the triangle at the distance returned (unchanged without triangles).
+    double beyond(const Vec3& p, double bound, std::uint32_t* nearest_face = nullptr) const;
 
 private:
     std::uint64_t m_revision;
