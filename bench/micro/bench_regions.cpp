@@ -135,7 +135,7 @@ void register_scene(const std::string& scene) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    for (const char* scene : {"demo", "A", "B", "cloth-slide", "coplanar-stack"}) register_scene(scene);
+    for (const char* scene : {"demo", "A", "B", "E2", "cloth-drape", "cloth-slide", "coplanar-stack"}) register_scene(scene);
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     benchmark::RunSpecifiedBenchmarks();

@@ -249,6 +249,9 @@ Gathered intersect_region(const Frame& frame, std::span<const TrianglePair> pair
         });
 }
 
+// Pairs from which a region's two sides are collected on two threads.
+constexpr std::size_t k_parallel_sides = 4096;
+
 // The triangles of a region's pairs on side a (`a`), side b (`b`) or both, each once, sorted:
 // marked, then listed by a scan of the marks where they are many (dense contact marks much of
 // a mesh, and sorting them was a twentieth of the regions' time on cloth-slide), else sorted.
@@ -286,13 +289,18 @@ Region describe(const Frame& frame, std::span<const TrianglePair> pairs, std::sp
     region.box = gathered.box;
     region.coplanar_area = gathered.coplanar_area;
     auto& segments = gathered.segments;
-    // Each side's triangles, the two sides at once (self-contact: one side, both triangles).
+    // Each side's triangles (self-contact: one side, both triangles); a large region's two
+    // sides at once (a small one's are cheaper than handing one to another thread).
+    const std::size_t count_a = frame.objects[region.obj_a].triangle_count();
+    const std::size_t count_b = frame.objects[region.obj_b].triangle_count();
     if (region.obj_a == region.obj_b) {
-        region.triangles_a = side_triangles(pairs, indices, frame.objects[region.obj_a].triangle_count(), true, true);
+        region.triangles_a = side_triangles(pairs, indices, count_a, true, true);
+    } else if (indices.size() < k_parallel_sides) {
+        region.triangles_a = side_triangles(pairs, indices, count_a, true, false);
+        region.triangles_b = side_triangles(pairs, indices, count_b, false, true);
     } else {
-        tbb::parallel_invoke(
-            [&] { region.triangles_a = side_triangles(pairs, indices, frame.objects[region.obj_a].triangle_count(), true, false); },
-            [&] { region.triangles_b = side_triangles(pairs, indices, frame.objects[region.obj_b].triangle_count(), false, true); });
+        tbb::parallel_invoke([&] { region.triangles_a = side_triangles(pairs, indices, count_a, true, false); },
+                             [&] { region.triangles_b = side_triangles(pairs, indices, count_b, false, true); });
     }
     // A segment reported again with the same ends (keys with features) counts once: the first.
     const auto keys = [&](const Gathered::Segment& x) {
