@@ -1,10 +1,14 @@
 // RegionTracker over a plane moving through a torus's underside: one region (both loops
 // through the same triangles), then two (a split), then one again (a merge), then none; ids,
-// predecessors, split_from and merged_into say so. And a region that moves keeps its id.
+// predecessors, split_from and merged_into say so. And a region that moves keeps its id, and
+// matching by boxes equals the obvious scan on hundreds of regions.
 
 #include "regions/region_shapes.hpp"
 
 #include <gtest/gtest.h>
+
+#include <cstdio>
+#include <random>
 
 namespace collidescope {
 namespace {
@@ -90,6 +94,61 @@ TEST(RegionTracker, AGapStartsNewTracks) {
     tracker.update(5, s.regions);
     EXPECT_EQ(s.regions[0].id, 2u);
     EXPECT_TRUE(s.regions[0].predecessors.empty());
+}
+
+// Matching by boxes against the obvious scan: hundreds of regions of one object pair in two
+// frames, sharing no triangle (as data set E's fragments), with random boxes of random sizes,
+// a few very wide and some touching exactly: each region's predecessors are exactly last
+// frame's regions whose boxes meet its box, in last frame's order (all weigh the same).
+TEST(RegionTracker, BoxMatchingFindsEveryOverlappingBoxOfLastFrame) {
+    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+        std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> at(-1, 1), size(0, 0.05);
+        std::uint32_t next_triangle = 0;
+        const auto frame_of = [&](std::size_t count) {
+            std::vector<Region> regions(count);
+            for (std::size_t r = 0; r < count; ++r) {
+                Region& region = regions[r];
+                region.obj_a = 0;
+                region.obj_b = 1;
+                region.pairs = 1;
+                region.triangles_a = {next_triangle};
+                region.triangles_b = {next_triangle++};
+                const Vec3 low(at(rng), at(rng), at(rng));
+                Vec3 extent(size(rng), size(rng), size(rng));
+                if (r % 97 == 0) extent.x() = 1.5;  // a few very wide boxes
+                region.box = Eigen::AlignedBox3d(low, low + extent);
+                if (r % 13 == 5 && r > 0) {  // touching the previous one's box exactly, along x
+                    const Eigen::AlignedBox3d& before = regions[r - 1].box;
+                    region.box = Eigen::AlignedBox3d(Vec3(before.max().x(), before.min().y(), before.min().z()),
+                                                     Vec3(before.max().x() + 0.01, before.max().y(), before.max().z()));
+                }
+            }
+            return regions;
+        };
+        RegionTracker tracker;
+        std::vector<Region> last = frame_of(300);
+        tracker.update(0, last);
+        std::vector<Region> now = frame_of(300);
+        // Some of this frame's boxes touch last frame's exactly too.
+        for (std::size_t r = 7; r < now.size(); r += 29) {
+            const Eigen::AlignedBox3d& before = last[r].box;
+            now[r].box = Eigen::AlignedBox3d(Vec3(before.min().x() - 0.02, before.min().y(), before.min().z()),
+                                             Vec3(before.min().x(), before.max().y(), before.max().z()));
+        }
+        tracker.update(1, now);
+        std::size_t matched = 0;
+        for (std::size_t r = 0; r < now.size(); ++r) {
+            std::vector<std::uint32_t> expected;
+            for (const Region& before : last) {
+                if (before.box.intersects(now[r].box)) expected.push_back(before.id);
+            }
+            matched += expected.empty() ? 0 : 1;
+            EXPECT_EQ(now[r].predecessors, expected) << "seed " << seed << ", region " << r;
+        }
+        EXPECT_GE(matched, 10u) << "the boxes meet often enough to test the matching";
+    }
 }
 
 }  // namespace
