@@ -40,7 +40,7 @@ struct CheckOptions {
     EngineOptions engine;           ///< --method, --self, --threads, --gpu-*, --aabb-*
 };
 
-constexpr const char* k_footer = R"(Frames (--frames) are numbered from 0 in scene order and the range is half-open:
+constexpr const char* k_check_footer = R"(Frames (--frames) are numbered from 0 in scene order and the range is half-open:
   A:B = frames A..B-1, A: = from A to the end, :B = frames 0..B-1, N = frame N alone.
   An empty range or one past the last frame is an error.
 Outputs (FILE may be - for stdout; logs and progress always go to stderr):
@@ -210,7 +210,7 @@ Command add_check_command(CLI::App& app) {
     auto options = std::make_shared<CheckOptions>();
     CLI::App* check = app.add_subcommand(
         "check", "Find the colliding triangle pairs of every frame; exit 1 when there are any");
-    check->footer(k_footer);
+    check->footer(k_check_footer);
     check->add_option("inputs", options->inputs,
                       "Mesh files (static over all frames), frame patterns (cloth.%04d.ply, "
                       "cloth.####.obj), meshes with a point cache (body.obj@body.pc2, .pc2 or .mdd) "

@@ -18,13 +18,13 @@ void append(std::string& line, std::uint32_t value, char separator) {
     line.push_back(separator);
 }
 
+}  // namespace
+
 std::string format_ms(double ms) {
     char text[32];
     std::snprintf(text, sizeof text, "%.3f", ms);
     return text;
 }
-
-}  // namespace
 
 void PairsWriter::on_frame(const FrameReport& report) {
     std::string lines;

@@ -64,4 +64,7 @@ private:
     std::uint64_t m_switches = 0;
 };
 
+/// Milliseconds with three decimals, as the summary lines and `inspect` print them.
+std::string format_ms(double ms);
+
 }  // namespace collidescope::app

@@ -1,6 +1,7 @@
 // `collidescope inspect`: what a recording holds (frames, objects, methods, pairs, time per
 // stage, file size by group), as text or JSON.
 
+#include "check_sinks.hpp"
 #include "commands.hpp"
 #include "inspect_info.hpp"
 #include "size_option.hpp"
@@ -21,12 +22,6 @@ struct InspectOptions {
     std::string file;
     bool json = false;
 };
-
-std::string format_ms(double ms) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3f", ms);
-    return text;
-}
 
 void print_counts(const char* title, const nlohmann::ordered_json& counts) {
     std::cout << title;

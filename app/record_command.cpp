@@ -41,7 +41,7 @@ struct RecordOptions {
     EngineOptions engine;           ///< --method, --self, --threads, --gpu-*, --aabb-*
 };
 
-constexpr const char* k_footer = R"(Writes one HDF5 file (schema: docs/reference/recording.md; read it with h5py, h5dump,
+constexpr const char* k_record_footer = R"(Writes one HDF5 file (schema: docs/reference/recording.md; read it with h5py, h5dump,
 `collidescope inspect`, `validate`, `compare` or the scripts in scripts/). The file is written
 in SWMR mode and flushed after every frame (every group of frames that waited for the writer):
 a killed recording keeps every frame flushed before it.
@@ -190,7 +190,7 @@ int run_record(const RecordOptions& options) {
 Command add_record_command(CLI::App& app) {
     auto options = std::make_shared<RecordOptions>();
     CLI::App* record = app.add_subcommand("record", "Record a session: every frame's pairs, stats and geometry to HDF5");
-    record->footer(k_footer);
+    record->footer(k_record_footer);
     record->add_option("inputs", options->inputs, "Mesh files, frame patterns, meshes with a point cache (body.obj@body.pc2) or scene.json manifests (as for check)")
         ->type_name("INPUT");
     record->add_option("--scene", options->scene, "A built-in scene instead of INPUT files: NAME[:PRESET] (" +

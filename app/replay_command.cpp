@@ -42,7 +42,7 @@ struct ReplayCliOptions {
     bool quiet = false;
 };
 
-constexpr const char* k_footer = R"(Writes DIR/frame_NNNN.png per recorded frame (NNNN = scene frame number), rendered offscreen
+constexpr const char* k_replay_footer = R"(Writes DIR/frame_NNNN.png per recorded frame (NNNN = scene frame number), rendered offscreen
 (OSMesa or EGL, see --gl) in several threads: the meshes (one colour per object), colliding
 triangles red, triangles left in the GPU cull's PCS amber and culled ones dimmed, the recorded
 depth buffers as thumbnails with a colour bar, a panel (frame, method and mode, the decision
@@ -306,7 +306,7 @@ int run_replay(const ReplayCliOptions& cli) {
 Command add_replay_command(CLI::App& app) {
     auto options = std::make_shared<ReplayCliOptions>();
     CLI::App* replay = app.add_subcommand("replay", "Render a recording as annotated PNG frames and/or a video clip, offscreen (or --diff two)");
-    replay->footer(k_footer);
+    replay->footer(k_replay_footer);
     replay->add_option("recordings", options->recordings, "The recording (two with --diff)")
         ->required()
         ->type_name("RECORDING.h5");

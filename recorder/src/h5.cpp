@@ -35,6 +35,11 @@ herr_t keep_description(unsigned, const H5E_error2_t* error, void* data) {
 
 }  // namespace
 
+herr_t collect_dataset(hid_t, const char* name, const H5O_info_t* info, void* data) {
+    if (info->type == H5O_TYPE_DATASET) static_cast<std::vector<std::string>*>(data)->push_back(std::string("/") + name);
+    return 0;
+}
+
 std::string error_detail() {
     // Walked from the API call down: the last description kept is the innermost one.
     std::string detail;

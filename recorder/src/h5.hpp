@@ -21,6 +21,10 @@ void silence();
 /// when the stack is empty.
 std::string error_detail();
 
+/// An H5Ovisit2 callback that appends each dataset's path ("/" + name) to the
+/// std::vector<std::string> that `data` points to.
+herr_t collect_dataset(hid_t, const char* name, const H5O_info_t* info, void* data);
+
 /// Owns one hid_t and closes it with the matching H5*close.
 class Id {
 public:

@@ -121,18 +121,9 @@ std::vector<std::pair<std::string, std::string>> Recording::metadata() const {
     return out;
 }
 
-namespace {
-
-herr_t collect_dataset(hid_t, const char* name, const H5O_info_t* info, void* data) {
-    if (info->type == H5O_TYPE_DATASET) static_cast<std::vector<std::string>*>(data)->push_back(std::string("/") + name);
-    return 0;
-}
-
-}  // namespace
-
 std::vector<std::string> Recording::dataset_paths() const {
     std::vector<std::string> paths;
-    m_impl->where.check(H5Ovisit2(m_impl->file.get(), H5_INDEX_NAME, H5_ITER_INC, collect_dataset, &paths, H5O_INFO_BASIC),
+    m_impl->where.check(H5Ovisit2(m_impl->file.get(), H5_INDEX_NAME, H5_ITER_INC, h5::collect_dataset, &paths, H5O_INFO_BASIC),
                         "cannot list the datasets");
     return paths;
 }

@@ -10,11 +10,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-herr_t collect_dataset(hid_t, const char* name, const H5O_info_t* info, void* data) {
-    if (info->type == H5O_TYPE_DATASET) static_cast<std::vector<std::string>*>(data)->push_back(std::string("/") + name);
-    return 0;
-}
-
 // A string property of mapping `i` (H5Pget_virtual_filename or _dsetname).
 template <class Get>
 std::string mapping_text(Get get, hid_t dcpl, std::size_t i) {
@@ -80,7 +75,7 @@ bool is_virtual(hid_t dataset) {
 
 std::vector<VirtualSource> list(const h5::Where& where, hid_t file) {
     std::vector<std::string> datasets;
-    where.check(H5Ovisit2(file, H5_INDEX_NAME, H5_ITER_NATIVE, collect_dataset, &datasets, H5O_INFO_BASIC),
+    where.check(H5Ovisit2(file, H5_INDEX_NAME, H5_ITER_NATIVE, h5::collect_dataset, &datasets, H5O_INFO_BASIC),
                 "cannot list the datasets");
     std::vector<VirtualSource> sources;
     for (const std::string& path : datasets) mapping_sources(where, file, path, sources);

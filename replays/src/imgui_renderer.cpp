@@ -15,7 +15,7 @@ namespace {
 // Positions in ImGui's pixels (origin top left, y down) to clip space; colours are sRGB bytes
 // normalised by the vertex fetch, multiplied with the texture (the font atlas is white where
 // a glyph is, so untextured shapes sample its white pixel).
-constexpr const char* k_vertex_shader = R"(#version 450 core
+constexpr const char* k_imgui_vertex_shader = R"(#version 450 core
 layout(location = 0) in vec2 position;
 layout(location = 1) in vec2 uv;
 layout(location = 2) in vec4 colour;
@@ -29,7 +29,7 @@ void main() {
 }
 )";
 
-constexpr const char* k_fragment_shader = R"(#version 450 core
+constexpr const char* k_imgui_fragment_shader = R"(#version 450 core
 in vec2 frag_uv;
 in vec4 frag_colour;
 uniform sampler2D atlas;
@@ -68,7 +68,7 @@ void set_projection(GLint location, const ImDrawData& data) {
 }  // namespace
 
 ImGuiRenderer::ImGuiRenderer() {
-    m_program = link_program(k_vertex_shader, k_fragment_shader, "overlay");
+    m_program = link_program(k_imgui_vertex_shader, k_imgui_fragment_shader, "overlay");
     m_projection = glGetUniformLocation(m_program, "projection");
     glUseProgram(m_program);
     glUniform1i(glGetUniformLocation(m_program, "atlas"), 0);

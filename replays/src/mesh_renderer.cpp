@@ -11,7 +11,7 @@
 namespace collidescope::replays {
 namespace {
 
-constexpr const char* k_vertex_shader = R"(#version 450 core
+constexpr const char* k_mesh_vertex_shader = R"(#version 450 core
 layout(location = 0) in vec3 position;
 uniform mat4 u_view_projection;
 out vec3 v_world;
@@ -23,7 +23,7 @@ void main() {
 
 // The face normal comes from the screen-space derivatives of the world position (flat shading
 // without per-vertex normals); lighting is two-sided, a headlight plus a key light from above.
-constexpr const char* k_fragment_shader = R"(#version 450 core
+constexpr const char* k_mesh_fragment_shader = R"(#version 450 core
 in vec3 v_world;
 uniform usamplerBuffer u_states;
 uniform vec3 u_base;
@@ -94,7 +94,7 @@ MeshRenderer::MeshRenderer(int width, int height) : m_width(width), m_height(hei
         throw UnavailableError("replay: cannot make a " + std::to_string(width) + "x" + std::to_string(height) +
                                " framebuffer");
     }
-    m_program = link_program(k_vertex_shader, k_fragment_shader, "mesh");
+    m_program = link_program(k_mesh_vertex_shader, k_mesh_fragment_shader, "mesh");
 }
 
 MeshRenderer::~MeshRenderer() {

@@ -3,6 +3,7 @@
 
 #include "mesh_renderer.hpp"
 #include "overlay.hpp"
+#include "overlay_colour.hpp"
 #include "overlay_moment.hpp"
 #include "overlay_regions.hpp"
 #include "overlay_text.hpp"
@@ -23,10 +24,6 @@ constexpr ImGuiWindowFlags k_window = ImGuiWindowFlags_NoDecoration | ImGuiWindo
                                       ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNav |
                                       ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus;
 constexpr const char* k_axes = "xyz";
-
-ImU32 colour32(const std::array<float, 3>& c, float alpha = 1.0f) {
-    return ImGui::ColorConvertFloat4ToU32(ImVec4(c[0], c[1], c[2], alpha));
-}
 
 std::string format(const char* pattern, double value) { return measured(pattern, value, "-"); }
 

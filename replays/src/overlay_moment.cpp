@@ -1,6 +1,7 @@
 // The between-frames marks: the moment-of-contact ring, the timeline's pass-through ticks.
 
 #include "overlay_moment.hpp"
+#include "overlay_colour.hpp"
 
 #include <imgui.h>
 
@@ -10,14 +11,6 @@
 namespace collidescope::replays {
 
 std::array<float, 3> pass_through_colour() { return {1.0f, 0.25f, 0.85f}; }  // magenta: apart from red and the regions
-
-namespace {
-
-ImU32 colour32(const std::array<float, 3>& c, float alpha = 1.0f) {
-    return ImGui::ColorConvertFloat4ToU32(ImVec4(c[0], c[1], c[2], alpha));
-}
-
-}  // namespace
 
 void draw_contact_marker(const FrameData& frame, const Camera& camera, const Rect& scene) {
     if (!frame.moment || !frame.moment->point_known) return;

@@ -1,6 +1,7 @@
 // The regions layer: curves and labels over the scene, lifetimes on the timeline.
 
 #include "overlay_regions.hpp"
+#include "overlay_colour.hpp"
 
 #include <imgui.h>
 
@@ -9,14 +10,6 @@
 #include <cstdio>
 
 namespace collidescope::replays {
-namespace {
-
-ImU32 colour32(const std::array<float, 3>& c, float alpha = 1.0f) {
-    return ImGui::ColorConvertFloat4ToU32(ImVec4(c[0], c[1], c[2], alpha));
-}
-
-}  // namespace
-
 std::array<float, 3> region_colour(std::uint32_t id) {
     // Bright against the grey meshes and the red colliding triangles.
     constexpr std::array<std::array<float, 3>, 6> k_palette = {{{1.00f, 0.92f, 0.10f},

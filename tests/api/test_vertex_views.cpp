@@ -19,16 +19,16 @@ namespace {
 // `count` vertices of random floats stored in a buffer of `width` scalars per row, x y z at
 // columns `columns` (so the rows can be padded and the axes permuted or reversed).
 template <class T>
-struct Layout {
+struct StridedBuffer {
     std::vector<T> buffer;
     VertexView view;
 };
 
 template <class T>
-Layout<T> random_layout(std::mt19937_64& rng, std::size_t count, std::size_t width, std::size_t first_column,
+StridedBuffer<T> random_layout(std::mt19937_64& rng, std::size_t count, std::size_t width, std::size_t first_column,
                         int column_step, bool reversed_rows) {
     std::uniform_real_distribution<double> value(-10, 10);
-    Layout<T> layout;
+    StridedBuffer<T> layout;
     layout.buffer.resize(count * width);
     for (T& v : layout.buffer) v = static_cast<T>(value(rng));
     const auto row = static_cast<std::ptrdiff_t>(width * sizeof(T));
@@ -47,7 +47,7 @@ void expect_copy_equals_reference(std::uint64_t seed) {
         const std::size_t width = packed ? 3 : 3 + rng() % 3;
         const int step = packed || trial % 3 != 0 ? 1 : -1;  // -1: z y x at columns 2 1 0
         const std::size_t first_column = step == 1 ? (packed ? 0 : rng() % (width - 2)) : 2;
-        const Layout<T> layout = random_layout<T>(rng, count, width, first_column, step, !packed && trial % 5 == 1);
+        const StridedBuffer<T> layout = random_layout<T>(rng, count, width, first_column, step, !packed && trial % 5 == 1);
         std::vector<Vec3> fast;
         std::vector<Vec3> slow;
         api::copy_vertices(layout.view, fast, "object 0");

@@ -25,6 +25,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::CliProcess;
 using testing::CliResult;
+using testing::line_count;
 using testing::FramePair;
 using testing_files::TempDir;
 
@@ -42,7 +43,6 @@ std::vector<FramePair> frames_before(const std::vector<FramePair>& pairs, std::u
     return kept;
 }
 
-std::size_t line_count(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
 
 class CheckInterrupt : public ::testing::Test {
 protected:

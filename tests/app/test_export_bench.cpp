@@ -22,6 +22,7 @@
 namespace collidescope {
 namespace {
 
+using testing::line_count;
 using testing::read_text;
 using testing::run_cli;
 using testing_files::TempDir;
@@ -35,10 +36,6 @@ using testing_files::TempDir;
     } catch (const UnavailableError& error) {                           \
         FAIL() << error.what();                                         \
     }
-
-std::size_t line_count(const std::string& text) {
-    return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
-}
 
 class ExportRoundTrip : public ::testing::TestWithParam<std::string> {};
 

@@ -24,7 +24,7 @@ struct Found {
     bool pass_through, resolved;
 };
 
-std::map<TrianglePair, Found> by_pair(const IntervalResult& r) {
+std::map<TrianglePair, Found> found_by_pair(const IntervalResult& r) {
     std::map<TrianglePair, Found> out;
     for (const IntervalContact& c : r.contacts) out[c.pair] = {c.toi, c.pass_through, c.resolved};
     return out;
@@ -44,10 +44,10 @@ int compare_with_reference(const Scene& scene, bool self, std::uint32_t first, s
     for (std::uint32_t f = first; f < first + count && f + 1 < scene.source->frame_count(); ++f) {
         Frame to = scene.source->frame(f + 1);
         const std::string what = name + " interval " + std::to_string(f);
-        const auto fast = by_pair(detector.detect(from, to));
-        const auto slow = by_pair(between_frames_reference(from, to, reference));
+        const auto fast = found_by_pair(detector.detect(from, to));
+        const auto slow = found_by_pair(between_frames_reference(from, to, reference));
         std::size_t settled = 0, unsettled = 0;
-        for (const auto& [pair, found] : by_pair(between_frames_reference(from, to, fine))) {
+        for (const auto& [pair, found] : found_by_pair(between_frames_reference(from, to, fine))) {
             ++(found.resolved ? settled : unsettled);
             if (!found.resolved) continue;
             EXPECT_TRUE(fast.count(pair)) << what << ": missed " << pair.obj_a << ":" << pair.tri_a << " " << pair.obj_b << ":" << pair.tri_b;

@@ -22,7 +22,7 @@ struct Script {
     }
 };
 
-AdaptiveOptions options() {
+AdaptiveOptions thesis_options() {
     AdaptiveOptions o;
     o.initial_exploration = 0.5;
     o.exploration_step = 0.1;
@@ -42,7 +42,7 @@ void expect(const Decision& d, Action action, std::uint8_t reason, std::uint8_t 
 
 TEST(ThesisPolicy, StartsBySamplingBoth) {
     Script script;
-    auto policy = make_thesis_policy(options(), script.uniform());
+    auto policy = make_thesis_policy(thesis_options(), script.uniform());
     const Decision first = policy->decide({});
     expect(first, Action::SampleBoth, k_reason_initial_sample, 1);
     EXPECT_FALSE(first.start_rebuild);
@@ -53,7 +53,7 @@ TEST(ThesisPolicy, StartsBySamplingBoth) {
 
 TEST(ThesisPolicy, Mode1KeepsAabbWhileFasterAndTheDrawMissesExploration) {
     Script script{{0.7, 0.9}};
-    auto policy = make_thesis_policy(options(), script.uniform());
+    auto policy = make_thesis_policy(thesis_options(), script.uniform());
     policy->decide({});
     policy->observe(both(1.0, 5.0));
     const Decision d = policy->decide({});  // (4), draw 0.7 >= 0.5
@@ -66,7 +66,7 @@ TEST(ThesisPolicy, Mode1KeepsAabbWhileFasterAndTheDrawMissesExploration) {
 
 TEST(ThesisPolicy, ExplorationDrawMovesToMode2ThenAabbFasterReturnsAndLowersExploration) {
     Script script{{0.2, 0.99}};
-    auto policy = make_thesis_policy(options(), script.uniform());
+    auto policy = make_thesis_policy(thesis_options(), script.uniform());
     policy->decide({});
     policy->observe(both(1.0, 4.0));
     const Decision explore = policy->decide({});  // (8): 0.2 < 0.5
@@ -81,7 +81,7 @@ TEST(ThesisPolicy, ExplorationDrawMovesToMode2ThenAabbFasterReturnsAndLowersExpl
 
 TEST(ThesisPolicy, Mode2StaysWhileGpuFasterAndRaisesExplorationEachFrame) {
     Script script{{0.0}};
-    AdaptiveOptions o = options();
+    AdaptiveOptions o = thesis_options();
     o.max_exploration = 1.0;
     auto policy = make_thesis_policy(o, script.uniform());
     policy->decide({});
@@ -98,7 +98,7 @@ TEST(ThesisPolicy, Mode2StaysWhileGpuFasterAndRaisesExplorationEachFrame) {
 
 TEST(ThesisPolicy, GpuFasterRebuildsInAThreadThenResamplesAndMovesToMode2) {
     Script script{{0.9}};
-    auto policy = make_thesis_policy(options(), script.uniform());
+    auto policy = make_thesis_policy(thesis_options(), script.uniform());
     policy->decide({});
     policy->observe(both(6.0, 2.0));  // AABB slower
     const Decision rebuild = policy->decide({});  // (5)
@@ -122,7 +122,7 @@ TEST(ThesisPolicy, GpuFasterRebuildsInAThreadThenResamplesAndMovesToMode2) {
 
 TEST(ThesisPolicy, ResampleWithAabbFasterStaysInMode1) {
     Script script{{0.9}};
-    auto policy = make_thesis_policy(options(), script.uniform());
+    auto policy = make_thesis_policy(thesis_options(), script.uniform());
     policy->decide({});
     policy->observe(both(6.0, 2.0));
     policy->decide({});
@@ -134,7 +134,7 @@ TEST(ThesisPolicy, ResampleWithAabbFasterStaysInMode1) {
 
 TEST(ThesisPolicy, RebuildAverageAboveGpuTimeMovesToMode2) {
     Script script;
-    auto policy = make_thesis_policy(options(), script.uniform());
+    auto policy = make_thesis_policy(thesis_options(), script.uniform());
     policy->decide({});
     policy->observe(both(1.0, 3.0));
     FrameFacts facts;
@@ -147,7 +147,7 @@ TEST(ThesisPolicy, RebuildAverageAboveGpuTimeMovesToMode2) {
 
 TEST(ThesisPolicy, WithoutGpuOnlyAabb) {
     Script script;
-    auto policy = make_thesis_policy(options(), script.uniform());
+    auto policy = make_thesis_policy(thesis_options(), script.uniform());
     FrameFacts facts;
     facts.gpu_available = false;
     for (int i = 0; i < 3; ++i) {

@@ -162,7 +162,7 @@ ByteWriter common_ply(bool big_endian, bool doubles) {
 TEST(PlyBinary, CommonLayoutsInBothByteOrdersAndPrecisions) {
     for (const bool big_endian : {false, true}) {
         for (const bool doubles : {false, true}) {
-            SCOPED_TRACE(testing::Message() << "big_endian " << big_endian << " doubles " << doubles);
+            SCOPED_TRACE(::testing::Message() << "big_endian " << big_endian << " doubles " << doubles);
             const MeshData mesh = parse_ply(common_ply(big_endian, doubles).span(), "c.ply");
             ASSERT_EQ(mesh.vertices.size(), 5u);
             const double y3 = 0.1 * 3 + 1;

@@ -101,20 +101,20 @@ FrameStats stats_of(std::uint32_t f) {
     return stats;
 }
 
-constexpr std::uint32_t k_frames = 6;
+constexpr std::uint32_t k_synthetic_frames = 6;
 
 // Feeds the recorder frames whose stats carry every 1.2 detail (on some frames only).
 void record_synthetic(const std::filesystem::path& file) {
-    const Scene scene = testing::crossing_sheets(2, k_frames);
+    const Scene scene = testing::crossing_sheets(2, k_synthetic_frames);
     recorder::SessionInfo session;
     session.scene = scene.name;
     session.method = "brute";
-    session.frame_end = k_frames;
+    session.frame_end = k_synthetic_frames;
     session.object_names = {"flat", "upright"};
     recorder::RecorderConfig config;
     config.path = file;
     recorder::Recorder rec(config, session, scene.source->frame(0));
-    for (std::uint32_t f = 0; f < k_frames; ++f) {
+    for (std::uint32_t f = 0; f < k_synthetic_frames; ++f) {
         const Frame frame = scene.source->frame(f);
         const FrameStats stats = stats_of(f);
         rec.on_frame({frame, stats, {}});
@@ -180,14 +180,14 @@ TEST(Schema12, DecisionHybridPassesSurvivorsAndDepthComeBack) {
     const recorder::Recording rec(file);
     EXPECT_EQ(rec.version_major(), 1);
     EXPECT_EQ(rec.version_minor(), recorder::schema::k_version_minor);
-    ASSERT_EQ(rec.frames_complete(), k_frames);
+    ASSERT_EQ(rec.frames_complete(), k_synthetic_frames);
     const auto decision = rec.frame_values("decision");
     const auto hybrid = rec.frame_values("hybrid");
     const auto gpu = rec.frame_values("gpu");
     ASSERT_FALSE(decision.empty());
     ASSERT_FALSE(hybrid.empty());
     EXPECT_TRUE(rec.frame_values("no_such_group").empty());
-    for (std::uint32_t f = 0; f < k_frames; ++f) {
+    for (std::uint32_t f = 0; f < k_synthetic_frames; ++f) {
         const FrameStats stats = stats_of(f);
         expect_values(decision, f, stats.decision, [](const auto& i, auto&& v) { for_each_decision_value(i, v); });
         expect_values(hybrid, f, stats.hybrid, [](const auto& i, auto&& v) { for_each_hybrid_value(i, v); });
@@ -197,8 +197,8 @@ TEST(Schema12, DecisionHybridPassesSurvivorsAndDepthComeBack) {
         EXPECT_EQ(rec.survivors(f), g.survivors) << "row " << f;
         expect_depth_equal(rec.depth_images(f), g.depth_images, f);
     }
-    EXPECT_THROW(rec.survivors(k_frames), InputError);
-    EXPECT_THROW(rec.depth_images(k_frames), InputError);
+    EXPECT_THROW(rec.survivors(k_synthetic_frames), InputError);
+    EXPECT_THROW(rec.depth_images(k_synthetic_frames), InputError);
 }
 
 TEST(Schema12, ASchema11FileReadsTheNewGroupsAsEmpty) {
@@ -214,11 +214,11 @@ TEST(Schema12, ASchema11FileReadsTheNewGroupsAsEmpty) {
     testing::set_int_attr(file, "/", recorder::schema::k_attr_version_minor, 1);
     const recorder::Recording rec(file);
     EXPECT_EQ(rec.version_minor(), 1);
-    ASSERT_EQ(rec.frames_complete(), k_frames);
+    ASSERT_EQ(rec.frames_complete(), k_synthetic_frames);
     EXPECT_TRUE(rec.frame_values("decision").empty());
     EXPECT_TRUE(rec.frame_values("hybrid").empty());
     EXPECT_FALSE(rec.frame_values("gpu").empty());
-    for (std::uint32_t f = 0; f < k_frames; ++f) {
+    for (std::uint32_t f = 0; f < k_synthetic_frames; ++f) {
         EXPECT_TRUE(rec.survivors(f).empty());
         EXPECT_TRUE(rec.depth_images(f).empty());
         expect_passes_equal(rec.gpu_passes(f), stats_of(f).gpu.value_or(GpuFrameInfo{}).passes, f);

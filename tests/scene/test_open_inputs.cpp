@@ -33,7 +33,7 @@ void write_obj(const std::filesystem::path& file, const MeshData& mesh) {
     write_text(file, text);
 }
 
-Scene open(std::vector<std::string> inputs) { return open_inputs(inputs); }
+Scene open_scene(std::vector<std::string> inputs) { return open_inputs(inputs); }
 
 TEST(OpenInputs, PrintfPatternTakesConsecutiveFramesFromTheFirst) {
     TempDir dir;
@@ -42,7 +42,7 @@ TEST(OpenInputs, PrintfPatternTakesConsecutiveFramesFromTheFirst) {
     }
     write_ply(dir / "cloth.002.ply", frame_mesh(2));  // not what %04d writes
     write_ply(dir / "cloth.0002.obj.ply", frame_mesh(2));
-    const Scene scene = open({(dir / "cloth.%04d.ply").string()});
+    const Scene scene = open_scene({(dir / "cloth.%04d.ply").string()});
     ASSERT_EQ(scene.source->frame_count(), 3u);
     ASSERT_EQ(scene.source->object_count(), 1u);
     EXPECT_EQ(scene.source->object_name(0), "cloth");
@@ -57,7 +57,7 @@ TEST(OpenInputs, AGapInThePatternsFramesNamesTheMissingFile) {
     TempDir dir;
     for (int frame : {3, 4, 5, 7, 8}) write_ply(dir / numbered_name("cloth.", frame, ".ply", 4), frame_mesh(frame));
     try {
-        open({(dir / "cloth.%04d.ply").string()});
+        open_scene({(dir / "cloth.%04d.ply").string()});
         FAIL() << "a gap in the frame numbers was accepted";
     } catch (const InputError& error) {
         const std::string message = error.what();
@@ -74,7 +74,7 @@ TEST(OpenInputs, HashAndPlainPrintfPatterns) {
         write_obj(dir / numbered_name("box-", frame, ".obj", 3), frame_mesh(-frame));
     }
     write_obj(dir / "ball_012.obj", frame_mesh(12));  // %d never pads
-    const Scene scene = open({(dir / "ball_%d.obj").string(), (dir / "box-###.obj").string()});
+    const Scene scene = open_scene({(dir / "ball_%d.obj").string(), (dir / "box-###.obj").string()});
     EXPECT_EQ(scene.source->frame_count(), 12u);
     EXPECT_EQ(scene.source->object_name(0), "ball");
     EXPECT_EQ(scene.source->object_name(1), "box");
@@ -88,7 +88,7 @@ TEST(OpenInputs, StaticFileRepeatsAlongASequence) {
     TempDir dir;
     for (int frame = 1; frame <= 4; ++frame) write_ply(dir / numbered_name("cloth.", frame, ".ply"), frame_mesh(frame));
     write_ply(dir / "floor.ply", frame_mesh(-5));
-    const Scene scene = open({(dir / "floor.ply").string(), (dir / "cloth.%d.ply").string()});
+    const Scene scene = open_scene({(dir / "floor.ply").string(), (dir / "cloth.%d.ply").string()});
     ASSERT_EQ(scene.source->frame_count(), 4u);
     EXPECT_EQ(scene.source->object_name(0), "floor");
     const Frame first = scene.source->frame(0);
@@ -103,7 +103,7 @@ TEST(OpenInputs, StaticFilesAloneMakeOneFrame) {
     TempDir dir;
     write_ply(dir / "a.ply.gz.ply", frame_mesh(0));
     write_obj(dir / "b.obj", frame_mesh(1));
-    const Scene scene = open({(dir / "a.ply.gz.ply").string(), (dir / "b.obj").string()});
+    const Scene scene = open_scene({(dir / "a.ply.gz.ply").string(), (dir / "b.obj").string()});
     EXPECT_EQ(scene.source->frame_count(), 1u);
     EXPECT_EQ(scene.source->object_name(0), "a.ply.gz");
     EXPECT_EQ(scene.source->frame(0).objects[1].vertices, frame_mesh(1).vertices);
@@ -120,7 +120,7 @@ TEST(OpenInputs, ManifestUsesItsNamesAndTheFirstFrames) {
                R"({"name": "drape", "frames": 3, "self": true, "objects": [
                    {"name": "sheet", "pattern": "cache/cloth.%04d.ply"},
                    {"pattern": "cache/body.####.ply"}]})");
-    const Scene scene = open({(dir / "scene.json").string()});
+    const Scene scene = open_scene({(dir / "scene.json").string()});
     EXPECT_EQ(scene.name, "drape");
     EXPECT_TRUE(scene.self_collision);
     EXPECT_EQ(scene.source->frame_count(), 3u);
@@ -133,7 +133,7 @@ TEST(OpenInputs, ManifestWithoutOptionalKeys) {
     TempDir dir;
     for (int frame = 0; frame < 2; ++frame) write_ply(dir / numbered_name("m", frame, ".ply"), frame_mesh(frame));
     write_text(dir / "scene.json", R"({"objects": [{"pattern": "m%d.ply"}]})");
-    const Scene scene = open({(dir / "scene.json").string()});
+    const Scene scene = open_scene({(dir / "scene.json").string()});
     EXPECT_EQ(scene.name, dir.path().filename().string());
     EXPECT_FALSE(scene.self_collision);
     EXPECT_EQ(scene.source->frame_count(), 2u);
@@ -143,14 +143,14 @@ TEST(OpenInputs, ManifestWithoutOptionalKeys) {
 TEST(OpenInputsErrors, PatternsAndFilesThatMatchNothing) {
     TempDir dir;
     const std::string pattern = (dir / "cloth.%04d.ply").string();
-    EXPECT_EQ(input_error([&] { open({pattern}); }), pattern + ": no file matches this frame pattern");
+    EXPECT_EQ(input_error([&] { open_scene({pattern}); }), pattern + ": no file matches this frame pattern");
     const std::string hashes = (dir / "nowhere/cloth.####.ply").string();
-    EXPECT_EQ(input_error([&] { open({hashes}); }), hashes + ": no file matches this frame pattern");
+    EXPECT_EQ(input_error([&] { open_scene({hashes}); }), hashes + ": no file matches this frame pattern");
     const std::string file = (dir / "bunny.obj").string();
-    EXPECT_EQ(input_error([&] { open({file}); }), file + ": no such file");
+    EXPECT_EQ(input_error([&] { open_scene({file}); }), file + ": no such file");
     const std::string two_fields = (dir / "c.%04d.%d.ply").string();
-    EXPECT_EQ(input_error([&] { open({two_fields}); }), two_fields + ": more than one frame number field");
-    EXPECT_THAT(input_error([&] { open({}); }), HasSubstr("no input"));
+    EXPECT_EQ(input_error([&] { open_scene({two_fields}); }), two_fields + ": more than one frame number field");
+    EXPECT_THAT(input_error([&] { open_scene({}); }), HasSubstr("no input"));
 }
 
 TEST(OpenInputsErrors, SequencesOfDifferentLengths) {
@@ -159,7 +159,7 @@ TEST(OpenInputsErrors, SequencesOfDifferentLengths) {
     for (int frame = 0; frame < 3; ++frame) write_ply(dir / numbered_name("b.", frame, ".ply"), frame_mesh(frame));
     const std::string a = (dir / "a.%d.ply").string();
     const std::string b = (dir / "b.%d.ply").string();
-    EXPECT_EQ(input_error([&] { open({a, b}); }),
+    EXPECT_EQ(input_error([&] { open_scene({a, b}); }),
               "objects 'a' (" + a + ": 4 frames) and 'b' (" + b + ": 3 frames) have different frame counts");
 }
 
@@ -169,7 +169,7 @@ TEST(OpenInputsErrors, MalformedManifests) {
     const std::string manifest = (dir / "scene.json").string();
     const auto error_of = [&](std::string_view json) {
         write_text(manifest, json);
-        return input_error([&] { open({manifest}); });
+        return input_error([&] { open_scene({manifest}); });
     };
     EXPECT_THAT(error_of(R"({"objects": [)"), HasSubstr(manifest + ": malformed JSON"));
     EXPECT_EQ(error_of(R"([1, 2])"), manifest + ": expected a JSON object at the top level");
@@ -190,7 +190,7 @@ TEST(OpenInputsErrors, MalformedManifests) {
               manifest + ": frames: asks for 2 frames but object 'm' (" + (dir / "m%d.ply").string() +
                   ") has 1");
     const std::string missing = (dir / "none.json").string();
-    EXPECT_EQ(input_error([&] { open({missing}); }), missing + ": no such file");
+    EXPECT_EQ(input_error([&] { open_scene({missing}); }), missing + ": no such file");
 }
 
 }  // namespace

@@ -23,7 +23,7 @@ using namespace testing_files;
 using testing::PositionFrames;
 using ::testing::HasSubstr;
 
-Scene open(std::vector<std::string> inputs) { return open_inputs(inputs); }
+Scene open_cached(std::vector<std::string> inputs) { return open_inputs(inputs); }
 
 // The demo scene's frames of one object, and their positions as float32 (what the files hold).
 struct ObjectMotion {
@@ -70,8 +70,8 @@ TEST(PointCacheInputs, CachesGiveTheFramesOfTheSequence) {
     for (std::size_t k = 0; k < sheet.frames.size(); ++k) times.push_back(static_cast<float>(k) / 24.0f);
     testing::write_mdd(dir / "sheet.mdd", sheet.frames, times);
 
-    const Scene sequence = open(patterns);
-    const Scene cached = open({(dir / "torus.ply").string() + "@" + (dir / "torus.pc2").string(),
+    const Scene sequence = open_cached(patterns);
+    const Scene cached = open_cached({(dir / "torus.ply").string() + "@" + (dir / "torus.pc2").string(),
                                (dir / "sheet.ply").string() + "@" + (dir / "sheet.mdd").string()});
     expect_same_frames(sequence, cached);
     EXPECT_EQ(cached.source->object_name(0), "torus");
@@ -85,7 +85,7 @@ TEST(PointCacheInputs, CachesGiveTheFramesOfTheSequence) {
     write_text(dir / "scene.json", R"({"name": "demo", "objects": [
         {"name": "ring", "mesh": "torus.ply", "cache": "torus.pc2"},
         {"mesh": "sheet.ply", "cache": "sheet.mdd"}]})");
-    const Scene manifest = open({(dir / "scene.json").string()});
+    const Scene manifest = open_cached({(dir / "scene.json").string()});
     expect_same_frames(sequence, manifest);
     EXPECT_EQ(manifest.source->object_name(0), "ring");
     EXPECT_EQ(manifest.name, "demo");
@@ -99,14 +99,14 @@ TEST(PointCacheInputs, ManifestFramesTakeTheFirstFramesOfTheCache) {
     write_ply(dir / "sheet.ply", sheet);
     testing::write_mdd(dir / "sheet.mdd", frames, {0.0f, 0.5f, 1.0f, 1.5f, 2.0f});
     write_text(dir / "scene.json", R"({"frames": 3, "objects": [{"mesh": "sheet.ply", "cache": "sheet.mdd"}]})");
-    const Scene scene = open({(dir / "scene.json").string()});
+    const Scene scene = open_cached({(dir / "scene.json").string()});
     ASSERT_EQ(scene.source->frame_count(), 3u);
     EXPECT_EQ(scene.frame_times, (std::vector<double>{0.0, 0.5, 1.0}));
     EXPECT_DOUBLE_EQ(scene.fps, 2.0);
     EXPECT_EQ(scene.source->frame(2).objects[0].vertices[0].z(), 2.0);
 
     write_text(dir / "long.json", R"({"frames": 6, "objects": [{"mesh": "sheet.ply", "cache": "sheet.mdd"}]})");
-    EXPECT_THAT(input_error([&] { open({(dir / "long.json").string()}); }),
+    EXPECT_THAT(input_error([&] { open_cached({(dir / "long.json").string()}); }),
                 HasSubstr("frames: asks for 6 frames but object 'sheet'"));
 }
 
@@ -117,7 +117,7 @@ TEST(PointCacheInputsErrors, VertexCountsThatDifferNameBothFiles) {
     testing::write_pc2(dir / "short.pc2", PositionFrames(2, std::vector<Vec3>(8, Vec3::Zero())));
     const std::string mesh = (dir / "sheet.ply").string();
     const std::string cache = (dir / "short.pc2").string();
-    const Scene scene = open({mesh + "@" + cache});
+    const Scene scene = open_cached({mesh + "@" + cache});
     EXPECT_EQ(input_error([&] { scene.source->frame(0); }),
               mesh + " has 9 vertices but its point cache " + cache + " has 8 points per frame (object 'sheet')");
 }
@@ -131,38 +131,38 @@ TEST(PointCacheInputsErrors, BadCachesAndMeshes) {
     testing::write_pc2(dir / "nan.pc2", frames);
     const std::string mesh = (dir / "sheet.ply").string();
     const std::string nan = (dir / "nan.pc2").string();
-    const Scene scene = open({mesh + "@" + nan});
+    const Scene scene = open_cached({mesh + "@" + nan});
     scene.source->frame(1);
     EXPECT_EQ(input_error([&] { scene.source->frame(2); }),
               nan + ": frame 2, vertex 1: coordinate x is not finite (nan) (object 'sheet')");
 
     const std::string missing_cache = (dir / "missing.mdd").string();
-    EXPECT_EQ(input_error([&] { open({mesh + "@" + missing_cache}); }), missing_cache + ": no such file");
+    EXPECT_EQ(input_error([&] { open_cached({mesh + "@" + missing_cache}); }), missing_cache + ": no such file");
     const std::string missing_mesh = (dir / "missing.ply").string();
-    EXPECT_EQ(input_error([&] { open({missing_mesh + "@" + nan}); }),
+    EXPECT_EQ(input_error([&] { open_cached({missing_mesh + "@" + nan}); }),
               missing_mesh + ": no such file (the mesh of point cache " + nan + ")");
     const std::string pattern = (dir / "sheet.%d.ply").string();
-    EXPECT_THAT(input_error([&] { open({pattern + "@" + nan}); }),
+    EXPECT_THAT(input_error([&] { open_cached({pattern + "@" + nan}); }),
                 HasSubstr(pattern + ": a point cache needs one mesh file, not a frame pattern"));
 
     const std::string manifest = (dir / "scene.json").string();
     write_text(manifest, R"({"objects": [{"pattern": "sheet.ply", "cache": "nan.pc2"}]})");
-    EXPECT_EQ(input_error([&] { open({manifest}); }),
+    EXPECT_EQ(input_error([&] { open_cached({manifest}); }),
               manifest + ": objects[0].cache: needs \"mesh\": the mesh file whose vertices the cache moves");
     write_text(manifest, R"({"objects": [{"pattern": "sheet.ply", "mesh": "sheet.ply"}]})");
-    EXPECT_EQ(input_error([&] { open({manifest}); }), manifest + ": objects[0]: give either \"pattern\" or \"mesh\", not both");
+    EXPECT_EQ(input_error([&] { open_cached({manifest}); }), manifest + ": objects[0]: give either \"pattern\" or \"mesh\", not both");
     write_text(manifest, R"({"objects": [{"mesh": "sheet.ply", "cache": 3}]})");
-    EXPECT_EQ(input_error([&] { open({manifest}); }), manifest + ": objects[0].cache: expected a string, got number 3");
+    EXPECT_EQ(input_error([&] { open_cached({manifest}); }), manifest + ": objects[0].cache: expected a string, got number 3");
 }
 
 TEST(PointCacheInputs, AnExistingFileWithAnAtIsAFile) {
     TempDir dir;
     write_ply(dir / "a@b.pc2.ply", testing::grid_sheet(1, 1.0));
-    const Scene scene = open({(dir / "a@b.pc2.ply").string()});
+    const Scene scene = open_cached({(dir / "a@b.pc2.ply").string()});
     EXPECT_EQ(scene.source->frame_count(), 1u);
     // Not a point cache after the '@': an ordinary (missing) file.
     const std::string other = (dir / "x@y.ply").string();
-    EXPECT_EQ(input_error([&] { open({other}); }), other + ": no such file");
+    EXPECT_EQ(input_error([&] { open_cached({other}); }), other + ": no such file");
 }
 
 }  // namespace

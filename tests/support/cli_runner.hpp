@@ -84,4 +84,7 @@ std::vector<FramePair> reference_frame_pairs(const Scene& scene, bool self_colli
 /// The text of a file.
 std::string read_text(const std::filesystem::path& file);
 
+/// The number of newlines in `text`.
+std::size_t line_count(const std::string& text);
+
 }  // namespace collidescope::testing

@@ -1,5 +1,6 @@
 // Mode 1's frame: trees (swap, build, refit, policy), then the traversal.
 
+#include "stats/stopwatch.hpp"
 #include "bvh/aabb_culler.hpp"
 
 #include "bvh/object_trees.hpp"
@@ -11,10 +12,6 @@
 
 namespace collidescope::bvh {
 namespace {
-
-double steady_ms() {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 // Objects that appear in some object pair this frame (self pairs only with self-collision).
 std::vector<std::uint32_t> used_objects(const FrameContext& context) {

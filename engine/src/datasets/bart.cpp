@@ -24,7 +24,6 @@
 namespace collidescope::datasets {
 namespace {
 
-constexpr double k_pi = std::numbers::pi;
 constexpr double k_major = 0.5;
 constexpr double k_tube = 0.15;
 

@@ -30,13 +30,6 @@
 namespace collidescope::datasets {
 namespace {
 
-constexpr double k_pi = std::numbers::pi;
-
-double smoothstep(double edge0, double edge1, double x) {
-    const double s = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
-    return s * s * (3 - 2 * s);
-}
-
 /// p turned by `angle` about the z axis; z is copied, so a plane z = const stays exact.
 Vec3 turn_about_z(const Vec3& p, double angle) {
     const double c = std::cos(angle), s = std::sin(angle);
@@ -50,11 +43,6 @@ GeneratedObject grid_object(std::string name, std::uint32_t columns, std::uint32
     object.phases = {{0, make_topology(grid_triangles(columns, rows), columns * rows)}};
     object.vertices = std::move(vertices);
     return object;
-}
-
-Scene finish(const char* name, Preset preset, std::uint64_t seed,
-             std::vector<GeneratedObject> objects, std::uint32_t frames) {
-    return {name, preset_name(preset), seed, true, make_generated_source(std::move(objects), frames)};
 }
 
 // ---- cloth-rest ------------------------------------------------------------------------
@@ -73,7 +61,7 @@ Scene make_rest(Preset preset, std::uint64_t seed) {
     };
     std::vector<GeneratedObject> objects;
     objects.push_back(grid_object("cloth", n, n, vertices));
-    return finish("cloth-rest", preset, seed, std::move(objects), frames);
+    return family_scene("cloth-rest", preset, seed, std::move(objects), frames);
 }
 
 // ---- cloth-drape -----------------------------------------------------------------------
@@ -127,7 +115,7 @@ Scene make_drape(Preset preset, std::uint64_t seed) {
     std::vector<GeneratedObject> objects;
     objects.push_back(grid_object("cloth", n, n, cloth));
     objects.push_back(std::move(sphere));
-    return finish("cloth-drape", preset, seed, std::move(objects), frames);
+    return family_scene("cloth-drape", preset, seed, std::move(objects), frames);
 }
 
 // ---- cloth-crumple ---------------------------------------------------------------------
@@ -157,7 +145,7 @@ Scene make_crumple(Preset preset, std::uint64_t seed) {
     };
     std::vector<GeneratedObject> objects;
     objects.push_back(grid_object("strip", columns, rows, vertices));
-    return finish("cloth-crumple", preset, seed, std::move(objects), frames);
+    return family_scene("cloth-crumple", preset, seed, std::move(objects), frames);
 }
 
 // ---- cloth-slide -----------------------------------------------------------------------
@@ -186,7 +174,7 @@ Scene make_slide(Preset preset, std::uint64_t seed) {
     std::vector<GeneratedObject> objects;
     objects.push_back(grid_object("sheet_0", n, n, lower));
     objects.push_back(grid_object("sheet_1", n, n, upper));
-    return finish("cloth-slide", preset, seed, std::move(objects), frames);
+    return family_scene("cloth-slide", preset, seed, std::move(objects), frames);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 
 #include "datasets/generated_source.hpp"
 #include "datasets/generators.hpp"
+#include "datasets/shapes.hpp"
 
 #include <Eigen/Geometry>
 
@@ -22,13 +23,7 @@
 namespace collidescope::datasets {
 namespace {
 
-constexpr double k_pi = std::numbers::pi;
 constexpr double k_fold_line = 0.4;  // the flap u > 0.4 folds over in the second half
-
-double smoothstep(double edge0, double edge1, double x) {
-    const double s = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
-    return s * s * (3 - 2 * s);
-}
 
 // One cloth's waves and placement, drawn from the seed.
 struct ClothMotion {

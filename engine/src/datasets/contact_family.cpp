@@ -37,14 +37,7 @@
 namespace collidescope::datasets {
 namespace {
 
-constexpr double k_pi = std::numbers::pi;
-
 std::uint32_t frames_of(Preset preset) { return pick(preset, 5, 20, 8); }
-
-Scene finish(const char* name, Preset preset, std::uint64_t seed, std::vector<GeneratedObject> objects,
-             std::uint32_t frames) {
-    return {name, preset_name(preset), seed, true, make_generated_source(std::move(objects), frames)};
-}
 
 GeneratedObject object_of(std::string name, std::vector<TriIndices> triangles, std::uint32_t vertices,
                           VertexFunction place) {
@@ -110,7 +103,7 @@ Scene make_layers(Preset preset, std::uint64_t seed) {
         };
         objects.push_back(object_of("layer_" + std::to_string(layer), grid_triangles(n, n), n * n, place));
     }
-    return finish("contact-layers", preset, seed, std::move(objects), frames);
+    return family_scene("contact-layers", preset, seed, std::move(objects), frames);
 }
 
 // ---- contact-spheres -------------------------------------------------------------------
@@ -154,7 +147,7 @@ Scene make_spheres(Preset preset, std::uint64_t seed) {
             }
         }));
     }
-    return finish("contact-spheres", preset, seed, std::move(objects), frames);
+    return family_scene("contact-spheres", preset, seed, std::move(objects), frames);
 }
 
 // ---- contact-rods ----------------------------------------------------------------------
@@ -182,7 +175,7 @@ Scene make_rods(Preset preset, std::uint64_t seed) {
         };
         objects.push_back(object_of("rod_" + std::to_string(rod), tube_triangles(around, along), around * along, place));
     }
-    return finish("contact-rods", preset, seed, std::move(objects), frames);
+    return family_scene("contact-rods", preset, seed, std::move(objects), frames);
 }
 
 // ---- contact-rollers -------------------------------------------------------------------
@@ -231,7 +224,7 @@ Scene make_rollers(Preset preset, std::uint64_t seed) {
         };
         objects.push_back(object_of("roller_" + std::to_string(r), tube_triangles(around, along), around * along, place));
     }
-    return finish("contact-rollers", preset, seed, std::move(objects), frames);
+    return family_scene("contact-rollers", preset, seed, std::move(objects), frames);
 }
 
 // ---- coplanar-stack --------------------------------------------------------------------
@@ -259,7 +252,7 @@ Scene make_stack(Preset preset, std::uint64_t seed) {
         };
         objects.push_back(object_of("patch_" + std::to_string(patch), grid_triangles(n, n), n * n, place));
     }
-    return finish("coplanar-stack", preset, seed, std::move(objects), frames);
+    return family_scene("coplanar-stack", preset, seed, std::move(objects), frames);
 }
 
 }  // namespace

@@ -12,7 +12,6 @@
 namespace collidescope {
 namespace {
 
-constexpr double k_pi = std::numbers::pi;
 constexpr double k_torus_major_radius = 1.0;
 constexpr double k_torus_minor_radius = 0.3;
 constexpr double k_sheet_half_size = 1.6;
@@ -44,9 +43,9 @@ MeshData torus(const DemoConfig& config, double angle) {
     const double c = std::cos(angle);
     const double s = std::sin(angle);
     for (std::uint32_t i = 0; i < config.torus_major; ++i) {
-        const double phi = 2 * k_pi * i / config.torus_major;
+        const double phi = 2 * std::numbers::pi * i / config.torus_major;
         for (std::uint32_t j = 0; j < config.torus_minor; ++j) {
-            const double psi = 2 * k_pi * j / config.torus_minor;
+            const double psi = 2 * std::numbers::pi * j / config.torus_minor;
             const double ring = k_torus_major_radius + k_torus_minor_radius * std::cos(psi);
             const Vec3 p(ring * std::cos(phi), k_torus_minor_radius * std::sin(psi),
                          ring * std::sin(phi));
@@ -65,8 +64,8 @@ MeshData sheet(const DemoConfig& config, double offset, double phase) {
         const double y = -k_sheet_half_size + 2 * k_sheet_half_size * i / config.sheet_cells;
         for (std::uint32_t j = 0; j < side; ++j) {
             const double z = -k_sheet_half_size + 2 * k_sheet_half_size * j / config.sheet_cells;
-            const double wave = k_wave_amplitude * std::sin(2 * k_pi * z / k_sheet_half_size + phase) *
-                                std::cos(k_pi * y / (2 * k_sheet_half_size));
+            const double wave = k_wave_amplitude * std::sin(2 * std::numbers::pi * z / k_sheet_half_size + phase) *
+                                std::cos(std::numbers::pi * y / (2 * k_sheet_half_size));
             mesh.vertices.emplace_back(offset + wave, y, z);
         }
     }
@@ -88,8 +87,8 @@ Scene make_demo_scene(const DemoConfig& config, const std::string& preset) {
     std::vector<std::vector<MeshData>> frames;
     for (std::uint32_t f = 0; f < config.frames; ++f) {
         const double t = config.frames > 1 ? static_cast<double>(f) / (config.frames - 1) : 0.0;
-        frames.push_back({torus(config, k_pi * t),
-                          sheet(config, k_sheet_travel * (2 * t - 1), 4 * k_pi * t)});
+        frames.push_back({torus(config, std::numbers::pi * t),
+                          sheet(config, k_sheet_travel * (2 * t - 1), 4 * std::numbers::pi * t)});
     }
     Scene scene;
     scene.name = "demo";

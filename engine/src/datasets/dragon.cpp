@@ -26,8 +26,6 @@
 namespace collidescope::datasets {
 namespace {
 
-constexpr double k_pi = std::numbers::pi;
-
 // How each triangle of one dragon flies, drawn from the seed.
 struct Explosion {
     std::vector<Vec3> velocity;      // final displacement of the triangle's centroid

@@ -34,11 +34,15 @@
 #include "collidescope/scene.hpp"
 
 #include <array>
+#include <numbers>
 #include <cstdint>
 #include <string>
 #include <string_view>
 
 namespace collidescope::datasets {
+
+/// The generators' pi.
+inline constexpr double k_pi = std::numbers::pi;
 
 /// A size preset.
 enum class Preset { Small, Default, Large };

@@ -3,12 +3,15 @@
 // open tube, as topologies and as unit shapes to place per frame; the time and grid helpers
 // of the cloth and contact families.
 
+#include "datasets/generated_source.hpp"
 #include "datasets/generators.hpp"
 
 #include "collidescope/types.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace collidescope::datasets {
@@ -21,6 +24,19 @@ inline double frame_time(std::uint32_t frame, std::uint32_t frames) {
 /// Coordinate i of n evenly spaced values over [lo, hi].
 inline double lerp_grid(std::uint32_t i, std::uint32_t n, double lo, double hi) {
     return lo + (hi - lo) * static_cast<double>(i) / (n - 1);
+}
+
+/// 0 below edge0, 1 above edge1, and the cubic 3s^2 - 2s^3 of s = (x - edge0) / (edge1 - edge0)
+/// between: an ease in and out.
+inline double smoothstep(double edge0, double edge1, double x) {
+    const double s = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
+    return s * s * (3 - 2 * s);
+}
+
+/// A scene of the cloth or contact family (self-collision on) over its generated objects.
+inline Scene family_scene(const char* name, Preset preset, std::uint64_t seed,
+                          std::vector<GeneratedObject> objects, std::uint32_t frames) {
+    return {name, preset_name(preset), seed, true, make_generated_source(std::move(objects), frames)};
 }
 
 /// The preset's choice among three sizes.

@@ -23,7 +23,6 @@
 namespace collidescope::datasets {
 namespace {
 
-constexpr double k_pi = std::numbers::pi;
 constexpr double k_amplitude = 0.15;
 constexpr double k_dent_width = 0.15;
 

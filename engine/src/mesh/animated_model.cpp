@@ -6,6 +6,7 @@
 // without triangles is not an object. Each instance is welded (weld.hpp) on the key
 // (rest position, morph target positions, normalised influences).
 
+#include "mesh/format_extension.hpp"
 #include "mesh/animated_model.hpp"
 #include "mesh/assimp_checks.hpp"
 
@@ -37,12 +38,6 @@ Affine to_affine(const aiMatrix4x4& m) {
 Vec3 to_vec(const aiVector3D& v) { return {v.x, v.y, v.z}; }
 
 bool finite(const Vec3& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
-
-std::string lowercase(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
 
 class ModelReader {
 public:

@@ -11,6 +11,7 @@
 // 309 bytes) is.
 
 #include "mesh/assimp_checks.hpp"
+#include "mesh/format_extension.hpp"
 
 #include "collidescope/error.hpp"
 #include "collidescope/mesh.hpp"
@@ -25,14 +26,6 @@
 
 namespace collidescope {
 namespace {
-
-std::string format_extension(const std::filesystem::path& file) {
-    std::string extension = file.extension().string();
-    if (extension == ".gz") extension = file.stem().extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return extension;
-}
 
 // Tokens of an OFF header: whitespace-separated, '#' comments to the end of the line.
 class Tokens {

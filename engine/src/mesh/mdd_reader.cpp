@@ -13,12 +13,6 @@ namespace {
 
 constexpr std::uint64_t k_counts_size = 8;
 
-std::string number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
-
 // Times relative to frame 0; each finite and none before the one preceding it.
 std::vector<double> frame_times(const CacheFile& file, std::uint32_t frames) {
     std::vector<std::byte> raw(std::size_t{frames} * 4);  // the size check bounds this by the file
@@ -28,14 +22,14 @@ std::vector<double> frame_times(const CacheFile& file, std::uint32_t frames) {
     for (std::uint32_t k = 0; k < frames; ++k) {
         const double time = load4<float>(&raw[std::size_t{k} * 4], true);
         if (!std::isfinite(time)) {
-            fail(file, "time of frame " + std::to_string(k) + " is not finite (" + number(time) + ")");
+            fail(file, "time of frame " + std::to_string(k) + " is not finite (" + header_number(time) + ")");
         }
         if (k == 0) first = time;
         times[k] = time - first;
         if (k > 0 && times[k] < times[k - 1]) {
-            fail(file, "time of frame " + std::to_string(k) + " (" + number(time) +
+            fail(file, "time of frame " + std::to_string(k) + " (" + header_number(time) +
                            " s) is before frame " + std::to_string(k - 1) + "'s (" +
-                           number(times[k - 1] + first) + " s)");
+                           header_number(times[k - 1] + first) + " s)");
         }
     }
     return times;

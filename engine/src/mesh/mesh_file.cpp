@@ -1,5 +1,7 @@
 // read_mesh_file (reader by extension, then validation) and validate_mesh.
 
+#include "mesh/format_extension.hpp"
+
 #include "collidescope/error.hpp"
 #include "collidescope/mesh.hpp"
 
@@ -10,19 +12,6 @@
 
 namespace collidescope {
 namespace {
-
-std::string lowercase(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
-
-// The format's extension, looking through a trailing .gz: "cloth.0001.PLY.gz" -> ".ply".
-std::string format_extension(const std::filesystem::path& file) {
-    const std::string extension = lowercase(file.extension().string());
-    if (extension == ".gz") return lowercase(file.stem().extension().string());
-    return extension;
-}
 
 [[noreturn]] void fail(std::string_view source, const std::string& what) {
     throw InputError(std::string(source) + ": " + what);

@@ -19,12 +19,6 @@ namespace {
 constexpr std::size_t k_header_size = 32;
 constexpr char k_magic[12] = {'P', 'O', 'I', 'N', 'T', 'C', 'A', 'C', 'H', 'E', '2', '\0'};
 
-std::string number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
-
 }  // namespace
 
 PointCacheLayout read_pc2_layout(const CacheFile& file) {
@@ -44,9 +38,9 @@ PointCacheLayout read_pc2_layout(const CacheFile& file) {
     if (version != 1) fail(file, "header: version " + std::to_string(version) + " (only version 1 is known)");
     if (points <= 0) fail(file, "header: point count " + std::to_string(points) + " (expected at least 1)");
     if (samples <= 0) fail(file, "header: sample count " + std::to_string(samples) + " (expected at least 1)");
-    if (!std::isfinite(start_frame)) fail(file, "header: start frame is not finite (" + number(start_frame) + ")");
+    if (!std::isfinite(start_frame)) fail(file, "header: start frame is not finite (" + header_number(start_frame) + ")");
     if (!(std::isfinite(sample_rate) && sample_rate > 0)) {
-        fail(file, "header: sample rate " + number(sample_rate) + " (expected a positive number of frames)");
+        fail(file, "header: sample rate " + header_number(sample_rate) + " (expected a positive number of frames)");
     }
     check_data_size(file, k_header_size, static_cast<std::uint64_t>(samples),
                     static_cast<std::uint64_t>(points), "samples");

@@ -16,6 +16,13 @@
 
 namespace collidescope::point_cache {
 
+/// A header value as the readers' messages print it (%g).
+inline std::string header_number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
 /// An open cache file: its stream, its size in bytes and its name for messages.
 struct CacheFile {
     std::FILE* stream = nullptr;

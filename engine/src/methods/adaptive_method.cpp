@@ -1,5 +1,6 @@
 // The adaptive method's frame: facts, decision, run, outcome, trace.
 
+#include "stats/stopwatch.hpp"
 #include "methods/adaptive_method.hpp"
 
 #include "bvh/aabb_culler.hpp"
@@ -18,10 +19,6 @@ namespace collidescope {
 namespace {
 
 using namespace decision;
-
-double steady_ms() {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 // Triangles of the objects in inter-object pairs.
 std::uint64_t pcs_triangles(const FrameContext& context) {

@@ -187,9 +187,9 @@ struct SideResult {
 };
 
 // Object x's surface inside the closed object y, for each region of the object pair.
-class Side {
+class SurfaceInside {
 public:
-    Side(const Frame& frame, std::uint32_t x, std::uint32_t y, std::span<const TrianglePair> pairs,
+    SurfaceInside(const Frame& frame, std::uint32_t x, std::uint32_t y, std::span<const TrianglePair> pairs,
          std::span<const Piece> pieces, std::span<const std::uint32_t> regions, std::span<Region> all)
         : m_frame(frame), m_x(x), m_y(y), m_pairs(pairs), m_pieces(pieces) {
         const ObjectFrame& xo = frame.objects[x];
@@ -422,7 +422,7 @@ void measure_penetration(const Frame& frame, std::span<const TrianglePair> pairs
         for (const bool a_inside_b : {true, false}) {
             const std::uint32_t x = a_inside_b ? a : b, y = a_inside_b ? b : a;
             if (!mesh_shape(*frame.objects[y].topology)->closed) continue;
-            Side side(frame, x, y, pairs, pieces, members, regions);
+            SurfaceInside side(frame, x, y, pairs, pieces, members, regions);
             for (const std::uint32_t r : members) {
                 const SideResult measured = side.measure(regions[r]);
                 (a_inside_b ? regions[r].inside_area_a : regions[r].inside_area_b) = measured.area;

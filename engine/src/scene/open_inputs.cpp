@@ -16,6 +16,7 @@
 // files it lists; the command line's --fps / --clip win over them. "frames" does not shorten
 // an animated file (use --frames).
 
+#include "mesh/format_extension.hpp"
 #include "scene/animated_file.hpp"
 #include "scene/mesh_with_point_cache.hpp"
 #include "scene/file_source.hpp"
@@ -46,12 +47,6 @@ struct SceneInputs {
     std::shared_ptr<AnimatedFile> first_animated;  ///< says the scene's fps, clip and frame times
     char up_axis = 0;                              ///< the first file's that says one
 };
-
-std::string lowercase(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
 
 // Probing imports the file once more than a static mesh needs, so formats that cannot hold an
 // animation (our own readers' PLY and OBJ; STL, OFF) and gzipped files are not probed.

@@ -7,6 +7,11 @@
 
 namespace collidescope {
 
+/// Milliseconds on the steady clock since its epoch: a reading to subtract from another.
+inline double steady_ms() {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
 /// Measures milliseconds since construction or the last lap.
 class Stopwatch {
 public:
