@@ -34,8 +34,8 @@
 #include "collidescope/scene.hpp"
 
 #include <array>
-#include <numbers>
 #include <cstdint>
+#include <numbers>
 #include <string>
 #include <string_view>
 

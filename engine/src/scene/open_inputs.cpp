@@ -37,8 +37,6 @@
 namespace collidescope {
 namespace {
 
-using nlohmann::json;
-
 /// What the inputs add up to, before the FileSource is made.
 struct SceneInputs {
     std::vector<FileObject> objects;
@@ -108,6 +106,9 @@ std::vector<FileObject> open_objects(const std::string& spec, const std::string&
 // Reads a manifest's JSON and checks the keys one by one, naming the first bad one.
 class ManifestReader {
 public:
+    // In the class, not at file scope: a unity batch shares the file scope with its other files.
+    using json = nlohmann::json;
+
     ManifestReader(const std::filesystem::path& file, const AnimationOptions& animation)
         : m_file(file), m_animation(animation) {}
 
