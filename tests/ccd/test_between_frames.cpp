@@ -3,6 +3,7 @@
 // a grid: exact touches, coplanar contact and motions along the grid; crumpled sheets with
 // self-contact) at 1, 2 and 4 threads, seeds printed.
 
+#include "ccd/contacts_by_pair.hpp"
 #include "support/scene_builders.hpp"
 #include "support/sweep_size.hpp"
 
@@ -157,18 +158,6 @@ TEST(BetweenFrames, BadIntervalsAreOneLineErrors) {
 }
 
 // Random scenes: the fast detector against the reference, interval by interval.
-struct Reported {
-    double toi;
-    bool pass_through;
-    bool resolved;
-};
-
-std::map<TrianglePair, Reported> by_pair(const IntervalResult& r) {
-    std::map<TrianglePair, Reported> out;
-    for (const IntervalContact& c : r.contacts) out[c.pair] = {c.toi, c.pass_through, c.resolved};
-    return out;
-}
-
 TEST(BetweenFrames, EqualsTheReferenceOnRandomScenesAtOneTwoAndFourThreads) {
     int pass_throughs = 0, contacts = 0;
     for (const std::uint64_t seed : testing::sweep_of<std::uint64_t>({11, 12, 13, 14}, 2)) {
@@ -195,14 +184,14 @@ TEST(BetweenFrames, EqualsTheReferenceOnRandomScenesAtOneTwoAndFourThreads) {
             }
             for (std::size_t f = 0; f + 1 < frames.size(); ++f) {
                 const std::string what = "seed " + std::to_string(seed) + " interval " + std::to_string(f) + (self ? " self" : "");
-                const auto fast = by_pair(by_threads[f]);
+                const auto fast = testing::contacts_by_pair(by_threads[f]);
                 // The reference at the same tolerance: the same pairs, the same pass-throughs.
-                const auto slow = by_pair(between_frames_reference(frames[f], frames[f + 1], options));
+                const auto slow = testing::contacts_by_pair(between_frames_reference(frames[f], frames[f + 1], options));
                 // No false negative: the reference at a far finer tolerance finds nothing the fast one misses.
                 BetweenFramesOptions fine = options;
                 fine.tolerance = 1e-12;
                 fine.max_boxes = 20000;
-                for (const auto& [pair, found] : by_pair(between_frames_reference(frames[f], frames[f + 1], fine))) {
+                for (const auto& [pair, found] : testing::contacts_by_pair(between_frames_reference(frames[f], frames[f + 1], fine))) {
                     if (!found.resolved) continue;  // not proven within 1e-12: no claim
                     EXPECT_TRUE(fast.count(pair)) << what << ": missed " << pair.obj_a << ":" << pair.tri_a << " " << pair.obj_b << ":" << pair.tri_b;
                 }

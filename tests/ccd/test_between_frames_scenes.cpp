@@ -6,6 +6,7 @@
 // box budget (its even halving is slow where features nearly touch along a line: a pair it
 // cannot settle is reported, and claims nothing here), which keeps these tests to seconds.
 
+#include "ccd/contacts_by_pair.hpp"
 #include "support/testmodels.hpp"
 
 #include "collidescope/between_frames.hpp"
@@ -18,17 +19,6 @@
 
 namespace collidescope {
 namespace {
-
-struct Found {
-    double toi;
-    bool pass_through, resolved;
-};
-
-std::map<TrianglePair, Found> found_by_pair(const IntervalResult& r) {
-    std::map<TrianglePair, Found> out;
-    for (const IntervalContact& c : r.contacts) out[c.pair] = {c.toi, c.pass_through, c.resolved};
-    return out;
-}
 
 // Intervals [first, first + count) of `scene`; returns the pass-throughs found.
 int compare_with_reference(const Scene& scene, bool self, std::uint32_t first, std::uint32_t count, const std::string& name) {
@@ -44,10 +34,10 @@ int compare_with_reference(const Scene& scene, bool self, std::uint32_t first, s
     for (std::uint32_t f = first; f < first + count && f + 1 < scene.source->frame_count(); ++f) {
         Frame to = scene.source->frame(f + 1);
         const std::string what = name + " interval " + std::to_string(f);
-        const auto fast = found_by_pair(detector.detect(from, to));
-        const auto slow = found_by_pair(between_frames_reference(from, to, reference));
+        const auto fast = testing::contacts_by_pair(detector.detect(from, to));
+        const auto slow = testing::contacts_by_pair(between_frames_reference(from, to, reference));
         std::size_t settled = 0, unsettled = 0;
-        for (const auto& [pair, found] : found_by_pair(between_frames_reference(from, to, fine))) {
+        for (const auto& [pair, found] : testing::contacts_by_pair(between_frames_reference(from, to, fine))) {
             ++(found.resolved ? settled : unsettled);
             if (!found.resolved) continue;
             EXPECT_TRUE(fast.count(pair)) << what << ": missed " << pair.obj_a << ":" << pair.tri_a << " " << pair.obj_b << ":" << pair.tri_b;
