@@ -57,6 +57,24 @@ TEST(SurfaceDistance, EqualsTheNearestOfEveryTriangleBeforeAndAfterARefit) {
             } else {
                 EXPECT_LE(got, bound);
             }
+            // Started from a known distance, to some triangle: the same answers, and the
+            // known triangle when none is nearer.
+            const std::uint32_t some = static_cast<std::uint32_t>(rng() % mesh.triangles.size());
+            const TriIndices& t = mesh.triangles[some];
+            const double known =
+                (regions::closest_point_on_triangle(p, mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]) - p).norm();
+            std::uint32_t face = some;
+            const double from_known = distance.beyond(p, bound, &face, known);
+            EXPECT_GE(from_known, expected);
+            EXPECT_LE(from_known, known);
+            if (expected > bound) {
+                EXPECT_EQ(from_known, expected) << "round " << round << " point " << k;
+                const TriIndices& f = mesh.triangles[face];
+                EXPECT_EQ((regions::closest_point_on_triangle(p, mesh.vertices[f[0]], mesh.vertices[f[1]], mesh.vertices[f[2]]) - p).norm(),
+                          expected);
+            } else {
+                EXPECT_LE(from_known, std::max(bound, 0.0));
+            }
         }
     }
 }

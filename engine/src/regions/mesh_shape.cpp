@@ -23,26 +23,31 @@ MeshShape compute(const Topology& topology) {
     for (std::uint32_t tri = 0; tri < topology.triangles.size(); ++tri) {
         for (const std::uint32_t v : topology.triangles[tri]) shape.incident[next[v]++] = tri;
     }
-    // Closed: each directed edge (u, v) once, and its reverse (v, u) once. Through the
-    // incidence lists: u's outgoing edges are the corners after u in its triangles.
+    // Closed: each directed edge (u, v) once, and its reverse (v, u) once. Per vertex u, from
+    // its incidence list: the corners after u in its triangles (its outgoing edges' ends) and
+    // the corners before it (its incoming edges' starts). Closed exactly when, at every vertex,
+    // neither list repeats a vertex and the two are the same set: (u, v) then appears once
+    // (v once among u's outgoing ends) and (v, u) once (v once among u's incoming starts).
+    // Sorting two short lists per vertex, where counting each edge by scanning both ends'
+    // lists read each triangle some 24 times (the demo's first frame of regions: 0.3 ms of
+    // grouping and closedness, now 0.2).
     if (topology.triangles.empty()) return shape;
     for (const TriIndices& t : topology.triangles) {
         if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) return shape;
     }
-    const auto after = [&](std::uint32_t tri, std::uint32_t v) {
-        const TriIndices& t = topology.triangles[tri];
-        return t[0] == v ? t[1] : t[1] == v ? t[2] : t[0];
-    };
-    const auto count_edge = [&](std::uint32_t u, std::uint32_t v) {  // triangles with directed edge (u, v)
-        int n = 0;
-        for (std::uint32_t k = shape.incident_begin[u]; k < shape.incident_begin[u + 1]; ++k) n += after(shape.incident[k], u) == v;
-        return n;
-    };
+    std::vector<std::uint32_t> out, in;
     for (std::uint32_t u = 0; u < vertices; ++u) {
+        out.clear();
+        in.clear();
         for (std::uint32_t k = shape.incident_begin[u]; k < shape.incident_begin[u + 1]; ++k) {
-            const std::uint32_t v = after(shape.incident[k], u);
-            if (count_edge(u, v) != 1 || count_edge(v, u) != 1) return shape;
+            const TriIndices& t = topology.triangles[shape.incident[k]];
+            const int at = t[0] == u ? 0 : t[1] == u ? 1 : 2;
+            out.push_back(t[(at + 1) % 3]);
+            in.push_back(t[(at + 2) % 3]);
         }
+        std::sort(out.begin(), out.end());
+        std::sort(in.begin(), in.end());
+        if (out != in || std::adjacent_find(out.begin(), out.end()) != out.end()) return shape;
     }
     shape.closed = true;
     return shape;

@@ -240,7 +240,8 @@ public:
             }
             area += t.inside_area;
             for (int k = 0; k < 3; ++k) {
-                if (t.corners[k] != Status::Inside) continue;
+                // A corner reached before keeps the witness found then.
+                if (t.corners[k] != Status::Inside || m_scratch.vertex.marked(xo.topology->triangles[tri][k])) continue;
                 // Its witness: the nearest of the faces of Y its triangle meets.
                 const Vec3& corner = xo.vertices[xo.topology->triangles[tri][k]];
                 std::uint32_t witness = tri_y(m_pairs[by_triangle[begin]]);
@@ -282,7 +283,8 @@ public:
         // the faces that triangle meets; for a vertex the flood reached, its parent's witness,
         // or the face its own search found). Only a vertex whose bound exceeds the deepest so
         // far is searched, and that search stops at the first triangle within the deepest (the
-        // distance to it is again an upper bound).
+        // distance to it is again an upper bound); it starts from the bound, skipping every node
+        // of the tree farther than that.
         double depth = 0;
         if (!inside.empty()) {
             if (!m_distance) m_distance.emplace(*yo.topology, yo.vertices.span());
@@ -294,7 +296,7 @@ public:
                 double bound = std::sqrt(squared_distance(v, witness[k]));
                 if (bound > depth) {
                     std::uint32_t nearer = witness[k];
-                    const double searched = m_distance->beyond(v, depth, &nearer);
+                    const double searched = m_distance->beyond(v, depth, &nearer, bound);
                     if (searched < bound) {
                         bound = searched;
                         witness[k] = nearer;

@@ -102,10 +102,12 @@ SurfaceDistance::~SurfaceDistance() {
     if (m_revision != 0 && m_tree) tree_cache().give(m_revision, std::move(m_tree));
 }
 
-double SurfaceDistance::beyond(const Vec3& p, double bound, std::uint32_t* nearest_face) const {
-    double best = std::numeric_limits<double>::infinity();
+double SurfaceDistance::beyond(const Vec3& p, double bound, std::uint32_t* nearest_face, double known) const {
+    // Squared: the nearest so far, from `known` on (nodes farther than it are skipped at once).
+    double best = known * known;
     std::uint32_t best_face = UINT32_MAX;
-    if (m_tree->empty()) return best;
+    if (best <= (bound > 0 ? bound * bound : -1)) return known;
+    if (m_tree->empty()) return known;
     const double enough = bound > 0 ? bound * bound : -1;  // squared: a triangle this near ends the search
     thread_local std::vector<std::uint32_t> stack;  // kept: a search is short, an allocation was a fifth of it
     stack.assign(1, 0);
@@ -132,7 +134,8 @@ double SurfaceDistance::beyond(const Vec3& p, double bound, std::uint32_t* neare
         stack.push_back(left_first ? right : left);
         stack.push_back(left_first ? left : right);
     }
-    if (nearest_face && best_face != UINT32_MAX) *nearest_face = best_face;
+    if (best_face == UINT32_MAX) return known;  // nothing nearer than `known`
+    if (nearest_face) *nearest_face = best_face;
     return std::sqrt(best);
 }
 

@@ -7,6 +7,7 @@
 
 #include "collidescope/scene.hpp"
 
+#include <limits>
 #include <memory>
 #include <span>
 
@@ -28,7 +29,11 @@ public:
     /// `bound` (the search stops at the first triangle within it). For the largest distance of
     /// many points, pass the largest so far: most searches then end early. `nearest_face`, when
     /// not null, receives the triangle at the distance returned (unchanged without triangles).
-    double beyond(const Vec3& p, double bound, std::uint32_t* nearest_face = nullptr) const;
+    /// `known`: the distance from p to some triangle (infinity: none known), which the search
+    /// starts from, skipping every node farther than it; when nothing nearer is found, `known`
+    /// is returned and `nearest_face` left unchanged (set it to that triangle beforehand).
+    double beyond(const Vec3& p, double bound, std::uint32_t* nearest_face = nullptr,
+                  double known = std::numeric_limits<double>::infinity()) const;
 
 private:
     std::uint64_t m_revision;
