@@ -1,10 +1,14 @@
 // Segments to curves: a graph whose nodes are the segment ends' keys and whose edges are the
 // segments, walked from every node that is not a simple joint (degree 2), then around what is
-// left, which can only be loops.
+// left, which can only be loops. Its arrays, as long as the segments, are large blocks once
+// they are large (collidescope/large_blocks.hpp): fresh 4 KiB pages cost 13.7 us each on the
+// project's VM, and a dense region's first frame spent most of its curves' time faulting them in.
 
 #include "curves.hpp"
 
 #include "first_seen.hpp"
+
+#include "collidescope/large_blocks.hpp"
 
 #include <algorithm>
 #include <utility>
@@ -18,13 +22,15 @@ struct Incidence {
     std::uint32_t end;      ///< 0 or 1
 };
 
+using detail::LargeVector;
+
 struct Graph {
-    std::vector<const Piece*> segments;
-    std::vector<std::array<std::uint32_t, 2>> nodes_of;  ///< per segment, the node of each end
+    LargeVector<const Piece*> segments;
+    LargeVector<std::array<std::uint32_t, 2>> nodes_of;  ///< per segment, the node of each end
     /// Node k's segment ends are ends[node_begin[k] .. node_begin[k + 1]) (one array, not a
     /// vector per node: a dense region has a node per segment).
-    std::vector<std::uint32_t> node_begin;
-    std::vector<Incidence> ends;
+    LargeVector<std::uint32_t> node_begin;
+    LargeVector<Incidence> ends;
 
     std::size_t nodes() const { return node_begin.size() - 1; }
     std::span<const Incidence> incident(std::uint32_t node) const {
@@ -38,7 +44,7 @@ Graph build_graph(std::span<const Piece> pieces, std::span<const std::uint32_t> 
         std::uint64_t hash;
         std::uint32_t segment, end;
     };
-    std::vector<Entry> entries;
+    LargeVector<Entry> entries;
     for (const std::uint32_t index : indices) {
         const Piece& piece = pieces[index];
         if (piece.kind != PairIntersection::Kind::Segment) continue;
@@ -50,8 +56,8 @@ Graph build_graph(std::span<const Piece> pieces, std::span<const std::uint32_t> 
     // Nodes in the order of their first end; a key without a feature joins nothing (a node of
     // its own). Then each node's ends, in order, in one array.
     FirstSeen seen(entries.size());
-    std::vector<std::uint32_t> node_of(entries.size());
-    std::vector<std::uint32_t> counts;
+    LargeVector<std::uint32_t> node_of(entries.size());
+    LargeVector<std::uint32_t> counts;
     for (std::uint32_t i = 0; i < entries.size(); ++i) {
         const EndKey& k = key(entries[i]);
         const std::uint32_t first =

@@ -9,6 +9,8 @@
 #include "penetration.hpp"
 #include "stamped_marks.hpp"
 
+#include "collidescope/large_blocks.hpp"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
@@ -23,18 +25,24 @@
 namespace collidescope {
 namespace {
 
+// The working arrays as long as a frame's pairs or segments are large blocks once they are
+// large (collidescope/large_blocks.hpp): a fresh 4 KiB page costs 13.7 us on the project's VM,
+// and a dense frame's first regions touched megabytes of them (cloth-drape's first colliding
+// frame: most of its regions' time).
+using detail::LargeVector;
+
 // Numbers for the vertices of one mesh that one object pair's colliding triangles use, given in
 // the order they are met, each also a new set of the union-find (`parent`). Reset in O(1)
 // for the next object pair (a stamp per vertex, as StampedMarks).
 struct VertexNumbers {
     regions::StampedMarks seen;
-    std::vector<std::uint32_t> number;
+    LargeVector<std::uint32_t> number;
 
     void next(std::size_t vertices) {
         seen.next(vertices);
         if (number.size() < vertices) number.resize(vertices);
     }
-    std::uint32_t of(std::uint32_t vertex, std::vector<std::uint32_t>& parent) {
+    std::uint32_t of(std::uint32_t vertex, LargeVector<std::uint32_t>& parent) {
         if (seen.mark(vertex)) {
             number[vertex] = static_cast<std::uint32_t>(parent.size());
             parent.push_back(number[vertex]);
@@ -54,8 +62,8 @@ std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::spa
     const auto objects = [&](std::size_t i) { return std::uint64_t(pairs[i].obj_a) << 32 | pairs[i].obj_b; };
     // Working arrays as long as the pair list, kept from call to call on this thread (first-touch
     // page faults were a third of the grouping's time on a million pairs).
-    thread_local std::vector<std::uint32_t> order_kept, set_kept, region_kept;
-    const auto sized = [&](std::vector<std::uint32_t>& kept) {
+    thread_local LargeVector<std::uint32_t> order_kept, set_kept, region_kept;
+    const auto sized = [&](LargeVector<std::uint32_t>& kept) {
         if (kept.size() < pairs.size()) kept.resize(pairs.size());
         return std::span<std::uint32_t>(kept.data(), pairs.size());
     };
@@ -123,7 +131,7 @@ std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::spa
         // each side's vertex numbers, and the union-find over them.
         static thread_local regions::StampedMarks joined_a, joined_b;
         static thread_local VertexNumbers numbers_a, numbers_b;
-        static thread_local std::vector<std::uint32_t> parent;
+        static thread_local LargeVector<std::uint32_t> parent;
         const auto find = [&](std::uint32_t x) {
             while (parent[x] != x) x = parent[x] = parent[parent[x]];
             return x;
@@ -178,7 +186,7 @@ std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::spa
         }
     });
     // Regions in the order of their first pair; a counting pass sizes each before filling it.
-    std::vector<std::uint32_t> region_of_root(total, UINT32_MAX);
+    LargeVector<std::uint32_t> region_of_root(total, UINT32_MAX);
     const std::span<std::uint32_t> region_of_pair = sized(region_kept);
     std::vector<std::uint32_t> sizes;
     for (std::uint32_t i = 0; i < pairs.size(); ++i) {
@@ -206,24 +214,31 @@ std::vector<std::vector<std::uint32_t>> group_pairs(const Frame& frame, std::spa
 // coplanar frame writes almost none) and only those are read. Memory touched for the first time
 // (the kernel zeroing its pages) cost as much as filling it: value-initialising the slots of a
 // growing vector made the first two frames of cloth-slide 6x dearer than the rest. Growing
-// copies nothing (a frame's pieces are that frame's only).
+// copies nothing (a frame's pieces are that frame's only). A large block once large.
 class PieceBuffer {
 public:
+    PieceBuffer() = default;
+    PieceBuffer(const PieceBuffer&) = delete;
+    PieceBuffer& operator=(const PieceBuffer&) = delete;
+    ~PieceBuffer() { release(); }
+
     std::span<regions::Piece> get(std::size_t pairs) {
         if (pairs > m_capacity) {
-            m_data.reset();
+            release();
+            m_data = Allocator().allocate(2 * pairs);
             m_capacity = 2 * pairs;
-            m_data.reset(static_cast<regions::Piece*>(
-                ::operator new(m_capacity * sizeof(regions::Piece), std::align_val_t{alignof(regions::Piece)})));
         }
-        return {m_data.get(), pairs};
+        return {m_data, pairs};
     }
 
 private:
-    struct Free {
-        void operator()(regions::Piece* p) const { ::operator delete(p, std::align_val_t{alignof(regions::Piece)}); }
-    };
-    std::unique_ptr<regions::Piece, Free> m_data;
+    using Allocator = detail::LargeBlockAllocator<regions::Piece>;
+    void release() {
+        if (m_data) Allocator().deallocate(m_data, m_capacity);
+        m_data = nullptr;
+        m_capacity = 0;
+    }
+    regions::Piece* m_data = nullptr;
     std::size_t m_capacity = 0;
 };
 
@@ -237,7 +252,7 @@ struct Gathered {
         std::uint64_t hash;  ///< of both keys: equal ends, equal hashes
         std::uint32_t pair;  ///< its piece holds the keys
     };
-    std::vector<Segment> segments;
+    LargeVector<Segment> segments;
 
     void join(Gathered& other) {
         box.extend(other.box);
@@ -246,31 +261,38 @@ struct Gathered {
     }
 };
 
+// Pairs a thread intersects at a time: a region of a few thousand pairs (a frame of data set B,
+// cloth-drape) is split over the threads, where 4,096 kept them on one.
+constexpr std::size_t k_intersect_grain = 512;
+
 // A region's pairs' intersections, gathered, and kept in `pieces`: the segments (the curves
 // need them), and every piece when `keep_all` (the penetration measure reads them all). In
 // parallel over the pairs of a large region (dense contact is often one region), split the same
 // way on any number of threads, so the sums are the same.
 Gathered intersect_region(const Frame& frame, std::span<const TrianglePair> pairs, std::span<regions::Piece> pieces,
                           std::span<const std::uint32_t> indices, bool keep_all) {
-    return tbb::parallel_deterministic_reduce(
-        tbb::blocked_range<std::size_t>(0, indices.size(), 4096), Gathered{},
-        [&](const tbb::blocked_range<std::size_t>& range, Gathered gathered) {
-            for (std::size_t k = range.begin(); k != range.end(); ++k) {
-                const std::uint32_t i = indices[k];
-                const regions::Piece piece = regions::intersect(frame, pairs[i]);
-                gathered.box.extend(piece.ends[0]);
-                gathered.box.extend(piece.ends[1]);
-                gathered.coplanar_area += piece.area;
-                if (piece.kind == PairIntersection::Kind::Segment) {
-                    std::construct_at(&pieces[i], piece);
-                    const std::uint64_t h0 = regions::key_hash(piece.keys[0]), h1 = regions::key_hash(piece.keys[1]);
-                    gathered.segments.push_back({std::min(h0, h1) * 31 + std::max(h0, h1), i});
-                } else if (keep_all) {
-                    std::construct_at(&pieces[i], piece);  // only then: a dense frame's pieces are gigabytes a second
-                }
+    const auto intersect_range = [&](const tbb::blocked_range<std::size_t>& range, Gathered gathered) {
+        for (std::size_t k = range.begin(); k != range.end(); ++k) {
+            const std::uint32_t i = indices[k];
+            const regions::Piece piece = regions::intersect(frame, pairs[i]);
+            gathered.box.extend(piece.ends[0]);
+            gathered.box.extend(piece.ends[1]);
+            gathered.coplanar_area += piece.area;
+            if (piece.kind == PairIntersection::Kind::Segment) {
+                std::construct_at(&pieces[i], piece);
+                const std::uint64_t h0 = regions::key_hash(piece.keys[0]), h1 = regions::key_hash(piece.keys[1]);
+                gathered.segments.push_back({std::min(h0, h1) * 31 + std::max(h0, h1), i});
+            } else if (keep_all) {
+                std::construct_at(&pieces[i], piece);  // only then: a dense frame's pieces are gigabytes a second
             }
-            return gathered;
-        },
+        }
+        return gathered;
+    };
+    // A region within one grain is one range whatever the threads: called directly, the same
+    // result without a reduction's set-up (data set E's 500 regions of a pair or two a frame).
+    if (indices.size() <= k_intersect_grain) return intersect_range({0, indices.size()}, Gathered{});
+    return tbb::parallel_deterministic_reduce(
+        tbb::blocked_range<std::size_t>(0, indices.size(), k_intersect_grain), Gathered{}, intersect_range,
         [](Gathered a, Gathered b) {
             a.join(b);
             return a;

@@ -2,7 +2,11 @@
 // Equal keys grouped in linear time (engine/src/regions, private): items are numbered by the
 // first item with an equal key, through an open-addressing table of their hashes. Sorting the
 // keys to bring equal ones together cost n log n comparisons of random hashes, most of the
-// curves' time on a frame of a thousand segments.
+// curves' time on a frame of a thousand segments. The table is a large block once it is large
+// (collidescope/large_blocks.hpp): a dense region's table is megabytes, touched for the first
+// time in its first frame.
+
+#include "collidescope/large_blocks.hpp"
 
 #include <bit>
 #include <cstddef>
@@ -36,7 +40,7 @@ private:
         std::uint64_t hash = 0;
         std::uint32_t item = k_empty;
     };
-    std::vector<Slot> m_slots;
+    detail::LargeVector<Slot> m_slots;
     std::size_t m_mask;
 };
 

@@ -19,7 +19,7 @@ MeshShape compute(const Topology& topology) {
     }
     for (std::uint32_t v = 0; v < vertices; ++v) shape.incident_begin[v + 1] += shape.incident_begin[v];
     shape.incident.resize(shape.incident_begin[vertices]);
-    std::vector<std::uint32_t> next(shape.incident_begin.begin(), shape.incident_begin.end() - 1);
+    detail::LargeVector<std::uint32_t> next(shape.incident_begin.begin(), shape.incident_begin.end() - 1);
     for (std::uint32_t tri = 0; tri < topology.triangles.size(); ++tri) {
         for (const std::uint32_t v : topology.triangles[tri]) shape.incident[next[v]++] = tri;
     }

@@ -2,6 +2,10 @@
 // Marks over a mesh's vertices or triangles that are reset in O(1) (engine/src/regions,
 // private): a mark is current when it equals the generation, so a frame pays for what it marks,
 // not for clearing arrays as long as the meshes. Kept per thread from call to call by its users.
+// A large block (collidescope/large_blocks.hpp) once a mesh is large: the marks of a
+// million-triangle mesh fault in a few huge pages, not a thousand small ones.
+
+#include "collidescope/large_blocks.hpp"
 
 #include <algorithm>
 #include <cstddef>
@@ -11,7 +15,7 @@
 namespace collidescope::regions {
 
 struct StampedMarks {
-    std::vector<std::uint32_t> values;
+    detail::LargeVector<std::uint32_t> values;
     std::uint32_t generation = 0;
 
     /// Clears every mark, for indices below `size`.
