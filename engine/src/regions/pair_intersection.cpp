@@ -24,8 +24,8 @@ using Triangle = std::array<Vec3, 3>;
 using Kind = PairIntersection::Kind;
 
 // orient3d with its floating-point filter inline, the exact predicate only where the filter
-// cannot decide: a pair takes some 18 orientations, nearly all decided by the filter, and
-// the calls were a fifth of the regions' time on the demo (perf, bench_regions).
+// cannot decide: a pair takes some 18 orientations, nearly all decided by the filter, and the
+// calls were a fifth of the demo's regions without the penetration measure (perf, bench_regions).
 inline int orient(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
     if (const int sign = filter::orient3d_filtered(a, b, c, d)) return sign;
     return orient3d(a, b, c, d);

@@ -106,9 +106,8 @@ double SurfaceDistance::beyond(const Vec3& p, double bound, std::uint32_t* neare
     // Squared: the nearest so far, from `known` on (nodes farther than it are skipped at once).
     double best = known * known;
     std::uint32_t best_face = UINT32_MAX;
-    if (best <= (bound > 0 ? bound * bound : -1)) return known;
-    if (m_tree->empty()) return known;
     const double enough = bound > 0 ? bound * bound : -1;  // squared: a triangle this near ends the search
+    if (best <= enough || m_tree->empty()) return known;
     thread_local std::vector<std::uint32_t> stack;  // kept: a search is short, an allocation was a fifth of it
     stack.assign(1, 0);
     while (!stack.empty()) {
