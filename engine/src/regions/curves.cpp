@@ -1,8 +1,7 @@
 // Segments to curves: a graph whose nodes are the segment ends' keys and whose edges are the
 // segments, walked from every node that is not a simple joint (degree 2), then around what is
 // left, which can only be loops. Its arrays, as long as the segments, are large blocks once
-// they are large (collidescope/large_blocks.hpp): fresh 4 KiB pages cost 13.7 us each on the
-// project's VM, and a dense region's first frame spent most of its curves' time faulting them in.
+// they are large, as find_regions' working arrays are (why: find_regions.cpp).
 
 #include "curves.hpp"
 
