@@ -26,7 +26,8 @@
 #
 # From the host it copies into the system only what any machine on the same network has to
 # reach the package registries: /etc/resolv.conf, the CA certificates under
-# /usr/local/share/ca-certificates, npm's client configuration (user and global npmrc), and
+# /usr/local/share/ca-certificates, npm's client configuration (user and global npmrc: setup
+# fetches the dragon from the registry they name), and
 # proxy variables (http_proxy, https_proxy, no_proxy) when set.
 set -euo pipefail
 

