@@ -9,6 +9,7 @@
 #include "collidescope/geometry.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace collidescope::ccd {
 namespace {
@@ -88,6 +89,50 @@ bool separated(const std::array<Path, 3>& points, const TriIndices& point_ids, c
     return side != 0;
 }
 
+// Whether the two triangles stay apart along the fixed direction d throughout the interval:
+// with every corner moving linearly, the gap g(t) = min_j b_j(t).d - max_i a_i(t).d is the
+// minimum of linear functions less the maximum of linear functions, so concave in t, and it
+// is positive on all of [0, 1] when it is at both ends (the same for a above b). Each gap is
+// taken beyond a static bound of its rounding: a dot product of coordinates at most `largest`
+// errs by at most 3u largest |d|_1 (u = 2^-53), a difference of two by twice that plus u of
+// the result; 16u largest |d|_1 covers it. d itself needs no accuracy: any direction is one.
+bool apart_along(const PairMotion& m, const Vec3& d, double largest) {
+    const double error = 16 * std::numeric_limits<double>::epsilon() / 2 * largest * d.cwiseAbs().sum();
+    bool a_below = true, b_below = true;
+    for (int end = 0; end < 2 && (a_below || b_below); ++end) {
+        double a_lo = std::numeric_limits<double>::infinity(), a_hi = -a_lo, b_lo = a_lo, b_hi = -a_lo;
+        for (int i = 0; i < 3; ++i) {
+            const double pa = m.a[i][end].dot(d), pb = m.b[i][end].dot(d);
+            a_lo = std::min(a_lo, pa);
+            a_hi = std::max(a_hi, pa);
+            b_lo = std::min(b_lo, pb);
+            b_hi = std::max(b_hi, pb);
+        }
+        a_below = a_below && b_lo - a_hi > error;
+        b_below = b_below && a_lo - b_hi > error;
+    }
+    return a_below || b_below;
+}
+
+// Directions that often part two triangles that do not touch when the planes' sides do not
+// (above all two triangles moving in one plane, side by side): from one centroid to the other
+// and each edge's normal within its triangle's plane, at t = 0; then the same at t = 1.
+bool apart_along_some_direction(const PairMotion& m, double largest) {
+    for (int end = 0; end < 2; ++end) {
+        const Vec3 ca = m.a[0][end] + m.a[1][end] + m.a[2][end];
+        const Vec3 cb = m.b[0][end] + m.b[1][end] + m.b[2][end];
+        if (apart_along(m, cb - ca, largest)) return true;
+        for (const std::array<Path, 3>* t : {&m.a, &m.b}) {
+            const std::array<Path, 3>& c = *t;
+            const Vec3 normal = (c[1][end] - c[0][end]).cross(c[2][end] - c[0][end]);
+            for (int i = 0; i < 3; ++i) {
+                if (apart_along(m, normal.cross(c[(i + 1) % 3][end] - c[i][end]), largest)) return true;
+            }
+        }
+    }
+    return false;
+}
+
 }  // namespace
 
 PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_boxes) {
@@ -98,6 +143,9 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
         for (int end = 0; end < 2; ++end) largest = std::max({largest, m.a[i][end].cwiseAbs().maxCoeff(), m.b[i][end].cwiseAbs().maxCoeff()});
     }
     if (separated(m.b, m.ib, m.a, m.ia, m.self, largest) || separated(m.a, m.ia, m.b, m.ib, m.self, largest)) return out;
+    // Two triangles of one object sharing a vertex are never apart along a direction.
+    const bool sharing = m.self && (shares(m.ib, m.ia[0]) || shares(m.ib, m.ia[1]) || shares(m.ib, m.ia[2]));
+    if (!sharing && apart_along_some_direction(m, largest)) return out;
     if (touching(m, 0)) {
         out.contact = out.start_contact = true;
         out.toi = 0;
@@ -137,8 +185,7 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
         }
     }
     // Each edge against each edge (not sharing a vertex, for self).
-    const bool shared = m.self && (shares(m.ib, m.ia[0]) || shares(m.ib, m.ia[1]) || shares(m.ib, m.ia[2]));
-    const bool planar = !shared && coplanar_motion(m);
+    const bool planar = !sharing && coplanar_motion(m);
     for (int i = 0; i < 3 && !planar; ++i) {
         const int i1 = (i + 1) % 3;
         Bounds edge_a = point_a[i];
