@@ -10,6 +10,8 @@
 #include "bvh/bvh.hpp"
 #include "ccd/interval_checks.hpp"
 #include "ccd/pair_motion.hpp"
+#include "ccd/swept_patches.hpp"
+#include "bvh/surface_patches.hpp"
 #include "stats/stopwatch.hpp"
 
 #include <tbb/enumerable_thread_specific.h>
@@ -29,18 +31,33 @@ struct SweptTree {
     std::uint64_t revision = 0;
     Tree tree;
     std::vector<Aabb> node_boxes, leaf_boxes;  // the boxes at t = 0, while the t = 1 ones are fit
+    /// With self-collision on a surface (bvh::surface_like): the tree has patches, and per
+    /// node the projected orientations kept throughout the interval (swept_node_sides).
+    bool patched = false;
+    std::vector<std::uint8_t> sides;
 };
 
 // Fits `swept` to the triangles' boxes over the interval: refit (or build) at the end, then
 // at the start, and the union of the two.
-void fit_swept(SweptTree& swept, const Topology& topology, std::span<const Vec3> from, std::span<const Vec3> to) {
+// With `self` on a surface, the tree also carries the patches of self-collision culling and
+// their sides over the interval.
+void fit_swept(SweptTree& swept, const Topology& topology, std::span<const Vec3> from, std::span<const Vec3> to,
+               bool self) {
     Tree& tree = swept.tree;
-    if (swept.revision != topology.revision || topology.revision == 0 || tree.empty()) {
-        bvh::build_tree(topology.triangles, to, bvh::BuildConfig{}, tree);
+    if (swept.revision != topology.revision || topology.revision == 0 || tree.empty() ||
+        swept.patched != (self && bvh::surface_like(topology.triangles))) {
+        swept.patched = self && bvh::surface_like(topology.triangles);
+        bvh::BuildConfig config;
+        config.surface_patches = swept.patched;
+        bvh::build_tree(topology.triangles, to, config, tree);
         swept.revision = topology.revision;
     } else {
         const bvh::RefitStats refit = bvh::refit(tree, topology.triangles, to);
-        if (refit.quality > 2) bvh::build_tree(topology.triangles, to, bvh::BuildConfig{}, tree);  // degraded: rebuild
+        if (refit.quality > 2) {  // degraded: rebuild
+            bvh::BuildConfig config;
+            config.surface_patches = swept.patched;
+            bvh::build_tree(topology.triangles, to, config, tree);
+        }
     }
     if (tree.empty()) return;
     swept.node_boxes.resize(tree.nodes.size());
@@ -50,6 +67,11 @@ void fit_swept(SweptTree& swept, const Topology& topology, std::span<const Vec3>
     bvh::refit(tree, topology.triangles, from);
     for (std::size_t i = 0; i < tree.nodes.size(); ++i) tree.nodes[i].box.grow(swept.node_boxes[i]);
     for (std::size_t i = 0; i < tree.leaf_boxes.size(); ++i) tree.leaf_boxes[i].grow(swept.leaf_boxes[i]);
+    if (swept.patched && !tree.patches.empty()) {
+        ccd::swept_node_sides(tree, from, to, swept.sides);
+    } else {
+        swept.sides.clear();
+    }
 }
 
 // A unit of the walk: node a of object x against node b of object y, or (self) below one node.
@@ -75,6 +97,12 @@ public:
         const Tree& ty = m_trees[item.y]->tree;
         const bvh::Node& na = tx.nodes[item.a];
         if (item.self) {
+            // Triangles proven embedded throughout the interval: no pair below to test.
+            const SweptTree& swept = *m_trees[item.x];
+            if (!swept.sides.empty() && ccd::swept_patch_is_embedded(tx, swept.sides, item.a, m_from.objects[item.x].vertices.span(),
+                                                               m_to.objects[item.x].vertices.span())) {
+                return;
+            }
             if (na.is_leaf()) {
                 for (std::uint32_t i = 0; i < na.count; ++i)
                     for (std::uint32_t j = i + 1; j < na.count; ++j) leaf_pair(item.x, tx, na.index + i, item.y, ty, na.index + j, out);
@@ -161,7 +189,7 @@ IntervalResult BetweenFrames::detect(const Frame& from, const Frame& to) {
     Stopwatch broad;
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
         fit_swept(m_state->trees[i], *from.objects[i].topology, from.objects[i].vertices.span(),
-                  to.objects[i].vertices.span());
+                  to.objects[i].vertices.span(), m_options.self_collision);
     });
     stats.broad_ms = broad.elapsed_ms();
     const Stopwatch narrow;
