@@ -92,6 +92,13 @@ TEST(SweptPatches, ALoopSimpleAtBothEndsButNotBetweenIsNotProven) {
     squeezed[2] = {0.8, 0.7, 0.1};
     EXPECT_TRUE(swept_loop_stays_simple(loop, from, shifted, 2));
     EXPECT_TRUE(swept_loop_stays_simple(loop, from, squeezed, 2));
+    // A border of collinear edges (a sheet's straight side), moved: its edges part only along
+    // their own direction.
+    const std::vector<std::uint32_t> strip{0, 1, 2, 3, 4, 5};
+    const std::vector<Vec3> start{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {3, 1, 0}, {0, 1, 0}};
+    std::vector<Vec3> slid = start;
+    for (Vec3& p : slid) p += Vec3(0.4, 0.3, 0);
+    EXPECT_TRUE(swept_loop_stays_simple(strip, start, slid, 2));
     // Edge-on to the projection (dropping x, the square is a segment): not simple, not proven.
     EXPECT_FALSE(swept_loop_stays_simple(loop, from, shifted, 0));
 }

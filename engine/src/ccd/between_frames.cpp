@@ -33,6 +33,7 @@ struct SweptTree {
     std::vector<Aabb> node_boxes, leaf_boxes;  // the boxes at t = 0, while the t = 1 ones are fit
     /// With self-collision on a surface (bvh::surface_like): the tree has patches, and per
     /// node the projected orientations kept throughout the interval (swept_node_sides).
+    bool self = false;
     bool patched = false;
     std::vector<std::uint8_t> sides;
 };
@@ -44,9 +45,9 @@ struct SweptTree {
 void fit_swept(SweptTree& swept, const Topology& topology, std::span<const Vec3> from, std::span<const Vec3> to,
                bool self) {
     Tree& tree = swept.tree;
-    if (swept.revision != topology.revision || topology.revision == 0 || tree.empty() ||
-        swept.patched != (self && bvh::surface_like(topology.triangles))) {
-        swept.patched = self && bvh::surface_like(topology.triangles);
+    if (swept.revision != topology.revision || topology.revision == 0 || tree.empty() || swept.self != self) {
+        swept.self = self;
+        swept.patched = self && bvh::surface_like(topology.triangles);  // O(n log n): once per topology
         bvh::BuildConfig config;
         config.surface_patches = swept.patched;
         bvh::build_tree(topology.triangles, to, config, tree);

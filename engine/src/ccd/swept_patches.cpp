@@ -96,14 +96,15 @@ bool apart_along(const SweptLoop& l, std::size_t e, std::size_t f, double dx, do
     return e_below || f_below;
 }
 
-// Non-consecutive edges e and f never share a point: apart along a normal of one of them, at
-// either end (the candidates of the separating axis theorem for two segments).
+// Non-consecutive edges e and f never share a point: apart along the normal or the direction
+// of one of them, at either end (the candidates of the separating axis theorem for two
+// segments; the directions part collinear edges, such as those along a sheet's straight border).
 bool stay_apart(const SweptLoop& l, std::size_t e, std::size_t f) {
     for (int end = 0; end < 2; ++end) {
         for (const std::size_t k : {e, f}) {
             const double dx = l.at(k + 1, end)[l.i] - l.at(k, end)[l.i];
             const double dy = l.at(k + 1, end)[l.j] - l.at(k, end)[l.j];
-            if (apart_along(l, e, f, -dy, dx)) return true;
+            if (apart_along(l, e, f, -dy, dx) || apart_along(l, e, f, dx, dy)) return true;
         }
     }
     return false;
