@@ -81,6 +81,31 @@ TEST(BvhRefit, SameBoxesForEveryThreadCount) {
     }
 }
 
+// The swept refit against the obvious way: each node's box the union of its boxes refit to
+// either end, each leaf box the union of the triangle's boxes at both ends.
+TEST(BvhRefit, SweptBoxesAreTheUnionOfBothEndsBoxes) {
+    std::mt19937_64 rng(9);
+    const MeshData mesh = testing::crumpled_sheet(rng, 30, 1.0, true);
+    const std::vector<Vec3> from = jiggle(rng, mesh.vertices, 0.125, 2), to = jiggle(rng, mesh.vertices, 0.125, 4);
+    BuildConfig config;
+    config.refit_grain = 32;
+    Tree swept, at_from, at_to;
+    for (Tree* tree : {&swept, &at_from, &at_to}) build_tree(mesh.triangles, mesh.vertices, config, *tree);
+    refit_swept(swept, mesh.triangles, from, to);
+    refit(at_from, mesh.triangles, from);
+    refit(at_to, mesh.triangles, to);
+    for (std::size_t i = 0; i < swept.nodes.size(); ++i) {
+        Aabb both = at_from.nodes[i].box;
+        both.grow(at_to.nodes[i].box);
+        ASSERT_EQ(swept.nodes[i].box, both) << "node " << i;
+    }
+    for (std::size_t k = 0; k < swept.leaf_boxes.size(); ++k) {
+        Aabb both = at_from.leaf_boxes[k];
+        both.grow(at_to.leaf_boxes[k]);
+        ASSERT_EQ(swept.leaf_boxes[k], both) << "slot " << k;
+    }
+}
+
 TEST(BvhTraverse, CandidatesAreExactlyTheOverlappingTriangleBoxes) {
     std::mt19937_64 rng(21);
     for (int round = 0; round < 6; ++round) {

@@ -237,6 +237,12 @@ struct RefitStats {
 /// the refit plan in parallel, then the top. Deterministic. With patches, their sides too.
 RefitStats refit(Tree& tree, std::span<const TriIndices> triangles, std::span<const Vec3> vertices);
 
+/// Refit for a motion between two frames: each box holds its triangles at `from` and at `to`
+/// (so throughout a linear motion between them). The patches' sides are left as they were,
+/// and a wide layout goes stale. quality: against the cost of the last build's boxes.
+RefitStats refit_swept(Tree& tree, std::span<const TriIndices> triangles, std::span<const Vec3> from,
+                       std::span<const Vec3> to);
+
 /// The SAH cost of a tree: (sum over inner nodes of half_area + sum over leaves of
 /// half_area * count) / half_area(root); traversal and triangle costs both 1. A root of zero
 /// area (all triangles on one line or point) gives the node count, so it stays comparable.

@@ -117,8 +117,11 @@ constexpr std::uint32_t kPrefetchSlots = 16;
 // called out and reloaded each box for its cost (docs/explanation/algorithms.md, "Refit").
 // Exact: min and max only, so a box is the same whatever the order.
 // kSides: also each leaf's patch sides (the triangles' common projected orientations).
-template <bool kSides>
-double fit_subtree(Tree& tree, const RefitSubtree& subtree, std::span<const Vec3> vertices, WideTree* wide) {
+// kSwept: each triangle's box also holds its corners at `to` (between frames: the box of its
+// positions at both ends, which holds it throughout a linear motion).
+template <bool kSides, bool kSwept = false>
+double fit_subtree(Tree& tree, const RefitSubtree& subtree, std::span<const Vec3> vertices, WideTree* wide,
+                   const Vec3* to = nullptr) {
     const RefitPlan& plan = tree.refit_plan;
     Node* nodes = tree.nodes.data();
     const TriIndices* tris = tree.leaf_triangles.data();
@@ -133,7 +136,8 @@ double fit_subtree(Tree& tree, const RefitSubtree& subtree, std::span<const Vec3
         const TriIndices& ahead = tris[std::min(k + kPrefetchSlots, subtree.slot_end - 1)];
         for (const std::uint32_t v : ahead) __builtin_prefetch(vertices.data() + v);
         const Vec3 &a = vertices[tris[k][0]], &b = vertices[tris[k][1]], &c = vertices[tris[k][2]];
-        const Bounds triangle = Bounds::of(a, b, c);
+        Bounds triangle = Bounds::of(a, b, c);
+        if constexpr (kSwept) triangle.grow(Bounds::of(to[tris[k][0]], to[tris[k][1]], to[tris[k][2]]));
         triangle.store(boxes[k]);
         bounds.grow(triangle);
         if constexpr (kSides) leaf_sides &= triangle_sides(a, b, c);
@@ -165,6 +169,32 @@ double normalise(const Tree& tree, double cost) {
 }
 
 }  // namespace
+
+RefitStats refit_swept(Tree& tree, std::span<const TriIndices> triangles, std::span<const Vec3> from,
+                       std::span<const Vec3> to) {
+    const Stopwatch stopwatch;
+    RefitStats stats;
+    if (tree.empty()) return stats;
+    assert(triangles.size() == tree.leaf_triangles.size() && from.size() == to.size());
+    (void)triangles;
+    const RefitPlan& plan = tree.refit_plan;
+    std::vector<double> subtree_cost(plan.subtrees.size(), 0.0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, plan.subtrees.size(), 1),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t s = range.begin(); s != range.end(); ++s) {
+            subtree_cost[s] = fit_subtree<false, true>(tree, plan.subtrees[s], from, nullptr, to.data());
+        }
+    });
+    double cost = 0;
+    for (const double c : subtree_cost) cost += c;
+    for (std::size_t k = plan.top.size(); k-- > 0;) cost += fit_inner<false>(tree, plan.top[k], nullptr);
+    ++tree.fits;  // a wide layout is stale now
+    stats.nodes = static_cast<std::uint32_t>(tree.nodes.size());
+    stats.sah_cost = normalise(tree, cost);
+    stats.quality = tree.built_cost > 0 ? stats.sah_cost / tree.built_cost : 1.0;
+    stats.ms = stopwatch.elapsed_ms();
+    return stats;
+}
 
 RefitStats refit(Tree& tree, std::span<const TriIndices> triangles, std::span<const Vec3> vertices) {
     const Stopwatch stopwatch;

@@ -30,44 +30,46 @@ using bvh::Tree;
 struct SweptTree {
     std::uint64_t revision = 0;
     Tree tree;
-    std::vector<Aabb> node_boxes, leaf_boxes;  // the boxes at t = 0, while the t = 1 ones are fit
+    double built_quality = 0;  ///< the swept refit's quality right after the last build
+    bool self = false;
     /// With self-collision on a surface (bvh::surface_like): the tree has patches, and per
     /// node the projected orientations kept throughout the interval (swept_node_sides).
-    bool self = false;
     bool patched = false;
     std::vector<std::uint8_t> sides;
 };
 
-// Fits `swept` to the triangles' boxes over the interval: refit (or build) at the end, then
-// at the start, and the union of the two.
-// With `self` on a surface, the tree also carries the patches of self-collision culling and
-// their sides over the interval.
+// Fits `swept` to the triangles' boxes over the interval (each the box of its corners at both
+// ends): built on the end positions for a new topology, then refit; rebuilt when the refit has
+// made it more than twice as costly as right after its build (the motion's own growth of the
+// boxes is in both). With `self` on a surface, the tree also carries the patches of
+// self-collision culling and their sides over the interval.
 void fit_swept(SweptTree& swept, const Topology& topology, std::span<const Vec3> from, std::span<const Vec3> to,
                bool self) {
     Tree& tree = swept.tree;
-    if (swept.revision != topology.revision || topology.revision == 0 || tree.empty() || swept.self != self) {
-        swept.self = self;
-        swept.patched = self && bvh::surface_like(topology.triangles);  // O(n log n): once per topology
+    const auto build = [&] {
         bvh::BuildConfig config;
         config.surface_patches = swept.patched;
         bvh::build_tree(topology.triangles, to, config, tree);
+    };
+    bool built = false;
+    if (swept.revision != topology.revision || topology.revision == 0 || tree.empty() || swept.self != self) {
+        swept.self = self;
+        swept.patched = self && bvh::surface_like(topology.triangles);  // O(n log n): once per topology
+        build();
         swept.revision = topology.revision;
-    } else {
-        const bvh::RefitStats refit = bvh::refit(tree, topology.triangles, to);
-        if (refit.quality > 2) {  // degraded: rebuild
-            bvh::BuildConfig config;
-            config.surface_patches = swept.patched;
-            bvh::build_tree(topology.triangles, to, config, tree);
-        }
+        built = true;
     }
-    if (tree.empty()) return;
-    swept.node_boxes.resize(tree.nodes.size());
-    swept.leaf_boxes.resize(tree.leaf_boxes.size());
-    for (std::size_t i = 0; i < tree.nodes.size(); ++i) swept.node_boxes[i] = tree.nodes[i].box;
-    for (std::size_t i = 0; i < tree.leaf_boxes.size(); ++i) swept.leaf_boxes[i] = tree.leaf_boxes[i];
-    bvh::refit(tree, topology.triangles, from);
-    for (std::size_t i = 0; i < tree.nodes.size(); ++i) tree.nodes[i].box.grow(swept.node_boxes[i]);
-    for (std::size_t i = 0; i < tree.leaf_boxes.size(); ++i) tree.leaf_boxes[i].grow(swept.leaf_boxes[i]);
+    if (tree.empty()) {
+        swept.sides.clear();
+        return;
+    }
+    bvh::RefitStats fitted = bvh::refit_swept(tree, topology.triangles, from, to);
+    if (!built && fitted.quality > 2 * swept.built_quality) {  // degraded: rebuild
+        build();
+        fitted = bvh::refit_swept(tree, topology.triangles, from, to);
+        built = true;
+    }
+    if (built) swept.built_quality = fitted.quality;
     if (swept.patched && !tree.patches.empty()) {
         ccd::swept_node_sides(tree, from, to, swept.sides);
     } else {
