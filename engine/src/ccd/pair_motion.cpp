@@ -133,6 +133,59 @@ bool apart_along_some_direction(const PairMotion& m, double largest) {
     return false;
 }
 
+// Two sets of moving points (a feature's corners) apart along the fixed direction d at both
+// ends, beyond the rounding bound (as apart_along: the gap is concave in t).
+template <std::size_t N, std::size_t M>
+bool corners_apart_along(const std::array<const Path*, N>& x, const std::array<const Path*, M>& y, const Vec3& d,
+                         double largest) {
+    const double error = 16 * std::numeric_limits<double>::epsilon() / 2 * largest * d.cwiseAbs().sum();
+    bool x_below = true, y_below = true;
+    for (int end = 0; end < 2 && (x_below || y_below); ++end) {
+        double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo, y_lo = x_lo, y_hi = -x_lo;
+        for (const Path* p : x) {
+            const double v = (*p)[end].dot(d);
+            x_lo = std::min(x_lo, v);
+            x_hi = std::max(x_hi, v);
+        }
+        for (const Path* p : y) {
+            const double v = (*p)[end].dot(d);
+            y_lo = std::min(y_lo, v);
+            y_hi = std::max(y_hi, v);
+        }
+        x_below = x_below && y_lo - x_hi > error;
+        y_below = y_below && x_lo - y_hi > error;
+    }
+    return x_below || y_below;
+}
+
+// A vertex that stays clear of a face's sides: apart along each edge's normal within the face's
+// plane (at t = 0, then t = 1), or along the line between the vertex and the face's centroid.
+bool vertex_clear_of_face(const Path& p, const Path& a, const Path& b, const Path& c, double largest) {
+    const std::array<const Path*, 1> vertex{&p};
+    const std::array<const Path*, 3> face{&a, &b, &c};
+    for (int end = 0; end < 2; ++end) {
+        const Vec3 normal = (b[end] - a[end]).cross(c[end] - a[end]);
+        const std::array<const Path*, 3> corners{&a, &b, &c};
+        for (int i = 0; i < 3; ++i) {
+            if (corners_apart_along(vertex, face, normal.cross((*corners[(i + 1) % 3])[end] - (*corners[i])[end]), largest)) {
+                return true;
+            }
+        }
+        if (corners_apart_along(vertex, face, p[end] - (a[end] + b[end] + c[end]) / 3, largest)) return true;
+    }
+    return false;
+}
+
+// Two edges apart along their common normal or the line between their midpoints, at either end.
+bool edges_clear(const Path& p0, const Path& p1, const Path& q0, const Path& q1, double largest) {
+    const std::array<const Path*, 2> e{&p0, &p1}, f{&q0, &q1};
+    for (int end = 0; end < 2; ++end) {
+        if (corners_apart_along(e, f, (p1[end] - p0[end]).cross(q1[end] - q0[end]), largest)) return true;
+        if (corners_apart_along(e, f, q0[end] + q1[end] - p0[end] - p1[end], largest)) return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_boxes) {
@@ -177,10 +230,12 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
     };
     // Each vertex of one against the other's face (not a vertex of that face, for self).
     for (int i = 0; i < 3; ++i) {
-        if (!(m.self && shares(m.ib, m.ia[i])) && point_a[i].overlaps(face_b)) {
+        if (!(m.self && shares(m.ib, m.ia[i])) && point_a[i].overlaps(face_b) &&
+            !vertex_clear_of_face(m.a[i], m.b[0], m.b[1], m.b[2], largest)) {
             record(vertex_face(m.a[i], m.b[0], m.b[1], m.b[2], config));
         }
-        if (!(m.self && shares(m.ia, m.ib[i])) && point_b[i].overlaps(face_a)) {
+        if (!(m.self && shares(m.ia, m.ib[i])) && point_b[i].overlaps(face_a) &&
+            !vertex_clear_of_face(m.b[i], m.a[0], m.a[1], m.a[2], largest)) {
             record(vertex_face(m.b[i], m.a[0], m.a[1], m.a[2], config));
         }
     }
@@ -195,7 +250,9 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
             if (m.self && (m.ia[i] == m.ib[j] || m.ia[i] == m.ib[j1] || m.ia[i1] == m.ib[j] || m.ia[i1] == m.ib[j1])) continue;
             Bounds edge_b = point_b[j];
             edge_b.grow(m.b[j1]);
-            if (edge_a.overlaps(edge_b)) record(edge_edge(m.a[i], m.a[i1], m.b[j], m.b[j1], config));
+            if (edge_a.overlaps(edge_b) && !edges_clear(m.a[i], m.a[i1], m.b[j], m.b[j1], largest)) {
+                record(edge_edge(m.a[i], m.a[i1], m.b[j], m.b[j1], config));
+            }
         }
     }
     if (out.contact) out.end_contact = touching(m, 1);
