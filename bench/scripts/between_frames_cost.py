@@ -26,8 +26,8 @@ SCENES = ["A", "B", "C", "D", "E1", "demo", "cloth-drape", "cloth-crumple", "clo
           "coplanar-stack"]
 
 
-def run(target, threads, between, self_collision):
-    command = [BIN, "check"] + (["--scene", target] if not os.path.exists(target) else [target, "--fps", "30"])
+def run(binary, target, threads, between, self_collision):
+    command = [binary, "check"] + (["--scene", target] if not os.path.exists(target) else [target, "--fps", "30"])
     command += ["-q", "--exit-zero", "--threads", str(threads)]
     if self_collision:
         command.append("--self")
@@ -54,6 +54,7 @@ def main():
     parser.add_argument("--self", default="", help="comma-separated scenes to run with --self")
     parser.add_argument("--input", action="append", default=[], help="an INPUT file, run with --self --fps 30")
     parser.add_argument("--out")
+    parser.add_argument("--binary", default=BIN, help="the collidescope to time (default: build/app/collidescope)")
     args = parser.parse_args()
     forced_self = set(filter(None, args.self.split(",")))
     rows = []
@@ -65,14 +66,14 @@ def main():
         try:
             for round_ in range(args.runs):
                 for mode in ((False, True) if round_ % 2 == 0 else (True, False)):
-                    (between if mode else per_frame).append(run(target, args.threads, mode, self_collision))
+                    (between if mode else per_frame).append(run(args.binary, target, args.threads, mode, self_collision))
         except RuntimeError as error:  # a scene between-frames cannot take (a topology change): said, then the next
             print("%-22s %s" % (os.path.basename(target), str(error).splitlines()[-1][-200:]))
             continue
         check_ms = statistics.median(r["ms"] for r in per_frame)
         between_ms = statistics.median(r["ms"] for r in between)
         last = between[-1]
-        row = {"scene": os.path.basename(target), "threads": args.threads, "runs": args.runs, "self": self_collision,
+        row = {"scene": os.path.basename(target), "binary": args.binary, "threads": args.threads, "runs": args.runs, "self": self_collision,
                "frames": per_frame[0]["count"], "pairs": per_frame[0]["pairs"], "check_ms": check_ms,
                "intervals": last["count"], "between_ms": between_ms, "ratio": between_ms / check_ms if check_ms > 0 else 0,
                "between_pairs": last["pairs"], "pass_throughs": last["pass_throughs"], "unresolved": last["unresolved"]}

@@ -2,16 +2,17 @@
 // boxes (the box of a triangle's corners at both ends, which holds the triangle at every time
 // between, as the motion is linear), kept from interval to interval and refit; the trees of
 // every object pair whose swept boxes meet are walked together (and each object's own, with
-// self-collision), and each pair of triangles whose swept boxes overlap is tested
+// self-collision, skipping nodes whose triangles are proven embedded throughout the interval:
+// swept_patches.hpp), and each pair of triangles whose swept boxes overlap is tested
 // (pair_motion.hpp) where the walk finds it, in parallel over the walk's top items.
 
 #include "collidescope/between_frames.hpp"
 
 #include "bvh/bvh.hpp"
+#include "bvh/surface_patches.hpp"
 #include "ccd/interval_checks.hpp"
 #include "ccd/pair_motion.hpp"
 #include "ccd/swept_patches.hpp"
-#include "bvh/surface_patches.hpp"
 #include "stats/stopwatch.hpp"
 
 #include <tbb/enumerable_thread_specific.h>
@@ -23,7 +24,6 @@
 namespace collidescope {
 namespace {
 
-using bvh::Aabb;
 using bvh::Tree;
 
 // One object's swept tree, kept while its topology stays.
@@ -102,8 +102,9 @@ public:
         if (item.self) {
             // Triangles proven embedded throughout the interval: no pair below to test.
             const SweptTree& swept = *m_trees[item.x];
-            if (!swept.sides.empty() && ccd::swept_patch_is_embedded(tx, swept.sides, item.a, m_from.objects[item.x].vertices.span(),
-                                                               m_to.objects[item.x].vertices.span())) {
+            if (!swept.sides.empty() &&
+                ccd::swept_patch_is_embedded(tx, swept.sides, item.a, m_from.objects[item.x].vertices.span(),
+                                             m_to.objects[item.x].vertices.span())) {
                 return;
             }
             if (na.is_leaf()) {

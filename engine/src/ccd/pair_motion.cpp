@@ -89,55 +89,16 @@ bool separated(const std::array<Path, 3>& points, const TriIndices& point_ids, c
     return side != 0;
 }
 
-// Whether the two triangles stay apart along the fixed direction d throughout the interval:
-// with every corner moving linearly, the gap g(t) = min_j b_j(t).d - max_i a_i(t).d is the
+// Whether two sets of linearly moving points (corners of features) stay apart along the fixed
+// direction d throughout the interval: the gap g(t) = min_j y_j(t).d - max_i x_i(t).d is the
 // minimum of linear functions less the maximum of linear functions, so concave in t, and it
-// is positive on all of [0, 1] when it is at both ends (the same for a above b). Each gap is
+// is positive on all of [0, 1] when it is at both ends (the same for x above y). Each gap is
 // taken beyond a static bound of its rounding: a dot product of coordinates at most `largest`
 // errs by at most 3u largest |d|_1 (u = 2^-53), a difference of two by twice that plus u of
 // the result; 16u largest |d|_1 covers it. d itself needs no accuracy: any direction is one.
-bool apart_along(const PairMotion& m, const Vec3& d, double largest) {
-    const double error = 16 * std::numeric_limits<double>::epsilon() / 2 * largest * d.cwiseAbs().sum();
-    bool a_below = true, b_below = true;
-    for (int end = 0; end < 2 && (a_below || b_below); ++end) {
-        double a_lo = std::numeric_limits<double>::infinity(), a_hi = -a_lo, b_lo = a_lo, b_hi = -a_lo;
-        for (int i = 0; i < 3; ++i) {
-            const double pa = m.a[i][end].dot(d), pb = m.b[i][end].dot(d);
-            a_lo = std::min(a_lo, pa);
-            a_hi = std::max(a_hi, pa);
-            b_lo = std::min(b_lo, pb);
-            b_hi = std::max(b_hi, pb);
-        }
-        a_below = a_below && b_lo - a_hi > error;
-        b_below = b_below && a_lo - b_hi > error;
-    }
-    return a_below || b_below;
-}
-
-// Directions that often part two triangles that do not touch when the planes' sides do not
-// (above all two triangles moving in one plane, side by side): from one centroid to the other
-// and each edge's normal within its triangle's plane, at t = 0; then the same at t = 1.
-bool apart_along_some_direction(const PairMotion& m, double largest) {
-    for (int end = 0; end < 2; ++end) {
-        const Vec3 ca = m.a[0][end] + m.a[1][end] + m.a[2][end];
-        const Vec3 cb = m.b[0][end] + m.b[1][end] + m.b[2][end];
-        if (apart_along(m, cb - ca, largest)) return true;
-        for (const std::array<Path, 3>* t : {&m.a, &m.b}) {
-            const std::array<Path, 3>& c = *t;
-            const Vec3 normal = (c[1][end] - c[0][end]).cross(c[2][end] - c[0][end]);
-            for (int i = 0; i < 3; ++i) {
-                if (apart_along(m, normal.cross(c[(i + 1) % 3][end] - c[i][end]), largest)) return true;
-            }
-        }
-    }
-    return false;
-}
-
-// Two sets of moving points (a feature's corners) apart along the fixed direction d at both
-// ends, beyond the rounding bound (as apart_along: the gap is concave in t).
 template <std::size_t N, std::size_t M>
-bool corners_apart_along(const std::array<const Path*, N>& x, const std::array<const Path*, M>& y, const Vec3& d,
-                         double largest) {
+bool apart_along(const std::array<const Path*, N>& x, const std::array<const Path*, M>& y, const Vec3& d,
+                 double largest) {
     const double error = 16 * std::numeric_limits<double>::epsilon() / 2 * largest * d.cwiseAbs().sum();
     bool x_below = true, y_below = true;
     for (int end = 0; end < 2 && (x_below || y_below); ++end) {
@@ -158,20 +119,39 @@ bool corners_apart_along(const std::array<const Path*, N>& x, const std::array<c
     return x_below || y_below;
 }
 
-// A vertex that stays clear of a face's sides: apart along each edge's normal within the face's
-// plane (at t = 0, then t = 1), or along the line between the vertex and the face's centroid.
-bool vertex_clear_of_face(const Path& p, const Path& a, const Path& b, const Path& c, double largest) {
-    const std::array<const Path*, 1> vertex{&p};
-    const std::array<const Path*, 3> face{&a, &b, &c};
+std::array<const Path*, 3> corners_of(const std::array<Path, 3>& t) { return {&t[0], &t[1], &t[2]}; }
+
+// Directions that often part two triangles that do not touch when the planes' sides do not
+// (above all two triangles moving in one plane, side by side): from one centroid to the other
+// and each edge's normal within its triangle's plane, at t = 0; then the same at t = 1.
+bool triangles_apart(const PairMotion& m, double largest) {
+    const auto a = corners_of(m.a), b = corners_of(m.b);
     for (int end = 0; end < 2; ++end) {
-        const Vec3 normal = (b[end] - a[end]).cross(c[end] - a[end]);
-        const std::array<const Path*, 3> corners{&a, &b, &c};
-        for (int i = 0; i < 3; ++i) {
-            if (corners_apart_along(vertex, face, normal.cross((*corners[(i + 1) % 3])[end] - (*corners[i])[end]), largest)) {
-                return true;
+        const Vec3 ca = m.a[0][end] + m.a[1][end] + m.a[2][end];
+        const Vec3 cb = m.b[0][end] + m.b[1][end] + m.b[2][end];
+        if (apart_along(a, b, cb - ca, largest)) return true;
+        for (const std::array<Path, 3>* t : {&m.a, &m.b}) {
+            const std::array<Path, 3>& c = *t;
+            const Vec3 normal = (c[1][end] - c[0][end]).cross(c[2][end] - c[0][end]);
+            for (int i = 0; i < 3; ++i) {
+                if (apart_along(a, b, normal.cross(c[(i + 1) % 3][end] - c[i][end]), largest)) return true;
             }
         }
-        if (corners_apart_along(vertex, face, p[end] - (a[end] + b[end] + c[end]) / 3, largest)) return true;
+    }
+    return false;
+}
+
+// A vertex that stays clear of a face: apart along each of the face's edge normals within its
+// plane, or along the line from the face's centroid to the vertex, at t = 0 or at t = 1.
+bool vertex_clear_of_face(const Path& p, const std::array<Path, 3>& face, double largest) {
+    const std::array<const Path*, 1> vertex{&p};
+    const auto corners = corners_of(face);
+    for (int end = 0; end < 2; ++end) {
+        const Vec3 normal = (face[1][end] - face[0][end]).cross(face[2][end] - face[0][end]);
+        for (int i = 0; i < 3; ++i) {
+            if (apart_along(vertex, corners, normal.cross(face[(i + 1) % 3][end] - face[i][end]), largest)) return true;
+        }
+        if (apart_along(vertex, corners, p[end] - (face[0][end] + face[1][end] + face[2][end]) / 3, largest)) return true;
     }
     return false;
 }
@@ -180,8 +160,8 @@ bool vertex_clear_of_face(const Path& p, const Path& a, const Path& b, const Pat
 bool edges_clear(const Path& p0, const Path& p1, const Path& q0, const Path& q1, double largest) {
     const std::array<const Path*, 2> e{&p0, &p1}, f{&q0, &q1};
     for (int end = 0; end < 2; ++end) {
-        if (corners_apart_along(e, f, (p1[end] - p0[end]).cross(q1[end] - q0[end]), largest)) return true;
-        if (corners_apart_along(e, f, q0[end] + q1[end] - p0[end] - p1[end], largest)) return true;
+        if (apart_along(e, f, (p1[end] - p0[end]).cross(q1[end] - q0[end]), largest)) return true;
+        if (apart_along(e, f, q0[end] + q1[end] - p0[end] - p1[end], largest)) return true;
     }
     return false;
 }
@@ -198,7 +178,7 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
     if (separated(m.b, m.ib, m.a, m.ia, m.self, largest) || separated(m.a, m.ia, m.b, m.ib, m.self, largest)) return out;
     // Two triangles of one object sharing a vertex are never apart along a direction.
     const bool sharing = m.self && (shares(m.ib, m.ia[0]) || shares(m.ib, m.ia[1]) || shares(m.ib, m.ia[2]));
-    if (!sharing && apart_along_some_direction(m, largest)) return out;
+    if (!sharing && triangles_apart(m, largest)) return out;
     if (touching(m, 0)) {
         out.contact = out.start_contact = true;
         out.toi = 0;
@@ -231,11 +211,11 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
     // Each vertex of one against the other's face (not a vertex of that face, for self).
     for (int i = 0; i < 3; ++i) {
         if (!(m.self && shares(m.ib, m.ia[i])) && point_a[i].overlaps(face_b) &&
-            !vertex_clear_of_face(m.a[i], m.b[0], m.b[1], m.b[2], largest)) {
+            !vertex_clear_of_face(m.a[i], m.b, largest)) {
             record(vertex_face(m.a[i], m.b[0], m.b[1], m.b[2], config));
         }
         if (!(m.self && shares(m.ia, m.ib[i])) && point_b[i].overlaps(face_a) &&
-            !vertex_clear_of_face(m.b[i], m.a[0], m.a[1], m.a[2], largest)) {
+            !vertex_clear_of_face(m.b[i], m.a, largest)) {
             record(vertex_face(m.b[i], m.a[0], m.a[1], m.a[2], config));
         }
     }
