@@ -30,7 +30,7 @@ using bvh::Tree;
 struct SweptTree {
     std::uint64_t revision = 0;
     Tree tree;
-    double built_quality = 0;  ///< the swept refit's quality right after the last build
+    double built_quality = 0;  ///< the swept refit's best quality since the last build
     bool self = false;
     /// With self-collision on a surface (bvh::surface_like): the tree has patches, and per
     /// node the projected orientations kept throughout the interval (swept_node_sides).
@@ -40,8 +40,8 @@ struct SweptTree {
 
 // Fits `swept` to the triangles' boxes over the interval (each the box of its corners at both
 // ends): built on the end positions for a new topology, then refit; rebuilt when the refit has
-// made it more than twice as costly as right after its build (the motion's own growth of the
-// boxes is in both). With `self` on a surface, the tree also carries the patches of
+// made it more than twice as costly as at its best since its build (the motion's own growth
+// of the boxes is in both). With `self` on a surface, the tree also carries the patches of
 // self-collision culling and their sides over the interval.
 void fit_swept(SweptTree& swept, const Topology& topology, std::span<const Vec3> from, std::span<const Vec3> to,
                bool self) {
@@ -69,7 +69,9 @@ void fit_swept(SweptTree& swept, const Topology& topology, std::span<const Vec3>
         fitted = bvh::refit_swept(tree, topology.triangles, from, to);
         built = true;
     }
-    if (built) swept.built_quality = fitted.quality;
+    // The reference: the best since the build (one built in a fast interval, whose swept boxes
+    // are large, would otherwise set it too high for the slower ones after it).
+    swept.built_quality = built ? fitted.quality : std::min(swept.built_quality, fitted.quality);
     if (swept.patched && !tree.patches.empty()) {
         ccd::swept_node_sides(tree, from, to, swept.sides);
     } else {

@@ -9,6 +9,7 @@
 #include "collidescope/geometry.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace collidescope::ccd {
@@ -93,13 +94,27 @@ bool separated(const std::array<Path, 3>& points, const TriIndices& point_ids, c
 // direction d throughout the interval: the gap g(t) = min_j y_j(t).d - max_i x_i(t).d is the
 // minimum of linear functions less the maximum of linear functions, so concave in t, and it
 // is positive on all of [0, 1] when it is at both ends (the same for x above y). Each gap is
-// taken beyond a static bound of its rounding: a dot product of coordinates at most `largest`
-// errs by at most 3u largest |d|_1 (u = 2^-53), a difference of two by twice that plus u of
-// the result; 16u largest |d|_1 covers it. d itself needs no accuracy: any direction is one.
+// taken beyond a static bound of its rounding: with `largest` at least every coordinate's
+// magnitude, a dot product errs by at most 3u largest |d|_1 (u = 2^-53), a difference of two by
+// twice that plus u of the result; 16u largest |d|_1 covers it, and 64 subnormals cover products
+// that underflow. Every value is at most largest |d|_1 in magnitude, so none overflows while that
+// stays below 1e300; where it does not (a normal times an edge grows as a coordinate's cube, and
+// its products overflowed at coordinates of 1e77), d is scaled to a largest component of 1 first:
+// d itself needs no accuracy, any direction is one.
 template <std::size_t N, std::size_t M>
-bool apart_along(const std::array<const Path*, N>& x, const std::array<const Path*, M>& y, const Vec3& d,
+bool apart_along(const std::array<const Path*, N>& x, const std::array<const Path*, M>& y, const Vec3& direction,
                  double largest) {
-    const double error = 16 * std::numeric_limits<double>::epsilon() / 2 * largest * d.cwiseAbs().sum();
+    constexpr double k_range = 1e300;
+    Vec3 d = direction;
+    double reach = largest * d.cwiseAbs().sum();
+    if (!(reach < k_range)) {
+        const double scale = d.cwiseAbs().maxCoeff();
+        if (!(scale > 0) || !(scale < std::numeric_limits<double>::infinity())) return false;
+        d /= scale;
+        reach = largest * d.cwiseAbs().sum();
+        if (!(reach < k_range)) return false;
+    }
+    const double error = 16 * std::numeric_limits<double>::epsilon() / 2 * reach + 64 * std::numeric_limits<double>::denorm_min();
     bool x_below = true, y_below = true;
     for (int end = 0; end < 2 && (x_below || y_below); ++end) {
         double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo, y_lo = x_lo, y_hi = -x_lo;

@@ -4,7 +4,8 @@
 // (u = 2^-53: u on each difference, u on each product, u on the subtraction), a sum of two
 // such by at most 5u times their magnitudes; a 2D dot product with a direction d of
 // coordinates at most L, and the difference of two, by at most 4u L |d|_1. Every test below
-// asks for a margin of 16u times the magnitude (plus a few subnormals against underflow).
+// asks for a margin of 16u times the magnitude (plus a few subnormals against underflow); a
+// product that overflows makes its bound infinite, or its value not finite: nothing is proven.
 
 #include "ccd/swept_patches.hpp"
 
@@ -77,8 +78,14 @@ bool never_folds(const SweptLoop& l, std::size_t k) {
 }
 
 // Edges e and f stay apart along the fixed 2D direction (dx, dy) (coordinates i, j): one's
-// two corners below the other's at both ends, beyond the rounding bound.
+// two corners below the other's at both ends, beyond the rounding bound. The direction is
+// scaled to a largest component of 1 (any direction will do), which keeps the products within
+// range; a value that is not finite decides nothing.
 bool apart_along(const SweptLoop& l, std::size_t e, std::size_t f, double dx, double dy) {
+    const double scale = std::max(std::abs(dx), std::abs(dy));
+    if (!(scale > 0) || !std::isfinite(scale)) return false;
+    dx /= scale;
+    dy /= scale;
     double largest = 0;
     for (const std::size_t k : {e, e + 1, f, f + 1}) {
         for (int end = 0; end < 2; ++end) {
@@ -90,6 +97,7 @@ bool apart_along(const SweptLoop& l, std::size_t e, std::size_t f, double dx, do
     for (int end = 0; end < 2; ++end) {
         const auto along = [&](std::size_t k) { return l.at(k, end)[l.i] * dx + l.at(k, end)[l.j] * dy; };
         const double e0 = along(e), e1 = along(e + 1), f0 = along(f), f1 = along(f + 1);
+        if (!std::isfinite(e0) || !std::isfinite(e1) || !std::isfinite(f0) || !std::isfinite(f1)) return false;
         e_below = e_below && std::min(f0, f1) - std::max(e0, e1) > bound;
         f_below = f_below && std::min(e0, e1) - std::max(f0, f1) > bound;
     }

@@ -1,0 +1,82 @@
+// One triangle pair over an interval: its filters (the planes' cubics, fixed directions) never
+// part a pair that touches, at any scale the engine accepts and beyond: random pairs that the
+// exact per-frame test finds intersecting, held still, are each reported (seeds printed). A
+// review found the fixed directions' dot products overflowing at coordinates of 1e77 and their
+// bound underflowing at 1e-161, each parting pairs that intersect.
+
+#include "ccd/pair_motion.hpp"
+#include "support/sweep_size.hpp"
+
+#include "collidescope/geometry.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <random>
+
+namespace collidescope::ccd {
+namespace {
+
+TEST(PairMotion, AStillIntersectingPairIsReportedAtEveryScale) {
+    int intersecting = 0;
+    // Tiny scales take the exact predicates' slow path (2 s for 20,000 pairs): the two pairs of
+    // the next test stand for them.
+    for (const double scale : {1.0, 1e50, 1e77, 1e99}) {
+        for (const std::uint64_t seed : testing::sweep_of<std::uint64_t>({41, 42})) {
+            std::printf("[ seed     ] PairMotion still pairs: seed %llu, scale %g\n", static_cast<unsigned long long>(seed), scale);
+            std::mt19937_64 rng(seed);
+            std::uniform_real_distribution<double> coordinate(-1, 1);
+            for (int n = 0; n < 20000; ++n) {
+                std::array<Vec3, 6> p;
+                for (Vec3& q : p) q = scale * Vec3(coordinate(rng), coordinate(rng), coordinate(rng));
+                if (!triangles_intersect(p[0], p[1], p[2], p[3], p[4], p[5])) continue;
+                ++intersecting;
+                PairMotion m;
+                for (int i = 0; i < 3; ++i) {
+                    m.a[i] = {p[i], p[i]};
+                    m.b[i] = {p[3 + i], p[3 + i]};
+                }
+                m.ia = {0, 1, 2};
+                m.ib = {3, 4, 5};
+                const PairOutcome outcome = test_pair(m, 1e-6 * scale, 10000);
+                ASSERT_TRUE(outcome.contact) << "seed " << seed << " scale " << scale << " pair " << n;
+                EXPECT_TRUE(outcome.start_contact) << "seed " << seed << " scale " << scale << " pair " << n;
+            }
+        }
+    }
+    std::printf("%d intersecting pairs, each reported\n", intersecting);
+    EXPECT_GT(intersecting, 1000);
+}
+
+// Two intersecting pairs near 1e-162, where the fixed directions' bound, without its term for
+// products that underflow, was below their rounding: each was parted.
+TEST(PairMotion, TwoStillPairsWhereProductsUnderflowAreReported) {
+    const std::array<std::array<Vec3, 6>, 2> pairs{{
+        {Vec3(-3.5725602073723994e-164, -7.2297075642524838e-162, -8.0039992240454986e-162),
+         Vec3(8.1320909323640938e-162, -2.3035169761213227e-162, -2.5177420982958113e-162),
+         Vec3(7.1105093203210387e-162, -2.0739716248710306e-162, 9.2328819370030257e-162),
+         Vec3(6.9272087892343251e-162, 3.3023603374585433e-163, 5.0753659174667118e-162),
+         Vec3(6.1575785106737853e-162, -3.5444592616562201e-162, -3.8703519851751192e-162),
+         Vec3(1.0356541396743601e-162, -5.1583806535622977e-162, -3.2373814141904233e-162)},
+        {Vec3(-5.1521965631847987e-163, -9.1457538973655784e-163, 7.5695406409447363e-163),
+         Vec3(8.9226185535288224e-163, -9.248450682976333e-163, 8.1668205086867642e-163),
+         Vec3(-2.0874981090402576e-163, 6.8809572589402271e-163, -7.0172758150338358e-163),
+         Vec3(2.7817032605689863e-163, 9.8077324197670788e-163, -6.1476972890306297e-163),
+         Vec3(-8.7967165914072165e-163, -2.8026083177375424e-163, -9.1932408271993483e-163),
+         Vec3(-6.8725374412601017e-163, 9.2861125112546331e-163, -6.5006265796490502e-163)},
+    }};
+    for (const std::array<Vec3, 6>& p : pairs) {
+        ASSERT_TRUE(triangles_intersect(p[0], p[1], p[2], p[3], p[4], p[5]));
+        PairMotion m;
+        for (int i = 0; i < 3; ++i) {
+            m.a[i] = {p[i], p[i]};
+            m.b[i] = {p[3 + i], p[3 + i]};
+        }
+        m.ia = {0, 1, 2};
+        m.ib = {3, 4, 5};
+        EXPECT_TRUE(test_pair(m, 1e-168, 10000).contact);
+    }
+}
+
+}  // namespace
+}  // namespace collidescope::ccd
