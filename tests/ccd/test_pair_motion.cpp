@@ -17,6 +17,18 @@
 namespace collidescope::ccd {
 namespace {
 
+// Triangles (p[0], p[1], p[2]) and (p[3], p[4], p[5]) of two objects, held still.
+PairMotion still_pair(const std::array<Vec3, 6>& p) {
+    PairMotion m;
+    for (int i = 0; i < 3; ++i) {
+        m.a[i] = {p[i], p[i]};
+        m.b[i] = {p[3 + i], p[3 + i]};
+    }
+    m.ia = {0, 1, 2};
+    m.ib = {3, 4, 5};
+    return m;
+}
+
 TEST(PairMotion, AStillIntersectingPairIsReportedAtEveryScale) {
     int intersecting = 0;
     // Tiny scales take the exact predicates' slow path (2 s for 20,000 pairs): the two pairs of
@@ -31,14 +43,7 @@ TEST(PairMotion, AStillIntersectingPairIsReportedAtEveryScale) {
                 for (Vec3& q : p) q = scale * Vec3(coordinate(rng), coordinate(rng), coordinate(rng));
                 if (!triangles_intersect(p[0], p[1], p[2], p[3], p[4], p[5])) continue;
                 ++intersecting;
-                PairMotion m;
-                for (int i = 0; i < 3; ++i) {
-                    m.a[i] = {p[i], p[i]};
-                    m.b[i] = {p[3 + i], p[3 + i]};
-                }
-                m.ia = {0, 1, 2};
-                m.ib = {3, 4, 5};
-                const PairOutcome outcome = test_pair(m, 1e-6 * scale, 10000);
+                const PairOutcome outcome = test_pair(still_pair(p), 1e-6 * scale, 10000);
                 ASSERT_TRUE(outcome.contact) << "seed " << seed << " scale " << scale << " pair " << n;
                 EXPECT_TRUE(outcome.start_contact) << "seed " << seed << " scale " << scale << " pair " << n;
             }
@@ -67,14 +72,7 @@ TEST(PairMotion, TwoStillPairsWhereProductsUnderflowAreReported) {
     }};
     for (const std::array<Vec3, 6>& p : pairs) {
         ASSERT_TRUE(triangles_intersect(p[0], p[1], p[2], p[3], p[4], p[5]));
-        PairMotion m;
-        for (int i = 0; i < 3; ++i) {
-            m.a[i] = {p[i], p[i]};
-            m.b[i] = {p[3 + i], p[3 + i]};
-        }
-        m.ia = {0, 1, 2};
-        m.ib = {3, 4, 5};
-        EXPECT_TRUE(test_pair(m, 1e-168, 10000).contact);
+        EXPECT_TRUE(test_pair(still_pair(p), 1e-168, 10000).contact);
     }
 }
 
