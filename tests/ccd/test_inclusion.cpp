@@ -12,6 +12,8 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <random>
 
@@ -248,6 +250,138 @@ TEST(Inclusion, MovingPlaneSideHoldsAtEverySampledTime) {
         }
         EXPECT_GT(sided, 20) << "seed " << seed;
         EXPECT_GT(undecided, 10) << "seed " << seed;
+    }
+}
+
+// ---- The planar query (vertex_face_in_plane) --------------------------------------------
+
+// Whether p lies in the closed triangle (a, b, c) at time t, all four in the plane that drops
+// axis `drop`, decided exactly: positions interpolated in rationals, the three orientations
+// of the projection; a flat triangle holds p when p is on its line within its extent.
+bool exactly_inside(const Path& p, const Path& a, const Path& b, const Path& c, int drop, const mpq_class& t) {
+    const int i = (drop + 1) % 3, j = (drop + 2) % 3;
+    const auto at = [&](const Path& x, int k) -> mpq_class { return mpq_class(x[0][k]) + t * (mpq_class(x[1][k]) - mpq_class(x[0][k])); };
+    const auto orient = [&](const Path& from, const Path& to) {
+        return sgn((at(to, i) - at(from, i)) * (at(p, j) - at(from, j)) - (at(to, j) - at(from, j)) * (at(p, i) - at(from, i)));
+    };
+    const int o[3] = {orient(a, b), orient(b, c), orient(c, a)};
+    const int area = sgn((at(b, i) - at(a, i)) * (at(c, j) - at(a, j)) - (at(b, j) - at(a, j)) * (at(c, i) - at(a, i)));
+    if (area != 0) return o[0] * area >= 0 && o[1] * area >= 0 && o[2] * area >= 0;
+    if (o[0] != 0 || o[1] != 0 || o[2] != 0) return false;
+    for (const int k : {i, j}) {
+        const mpq_class lo = std::min({at(a, k), at(b, k), at(c, k)}), hi = std::max({at(a, k), at(b, k), at(c, k)});
+        if (at(p, k) < lo || at(p, k) > hi) return false;
+    }
+    return true;
+}
+
+// Planes in which dyadic coordinates stay exact: z = 0.375, x = -1.25, and the tilted plane
+// x + 2y + 4z = 1.5 (its normal has no zero component: any axis can be dropped). (s, r) on a
+// grid of 2^-20 within [-4, 4] lands exactly on each.
+Vec3 on_plane(int plane, double s, double r) {
+    s = std::round(s * 0x1p20) * 0x1p-20;
+    r = std::round(r * 0x1p20) * 0x1p-20;
+    if (plane == 0) return {s, r, 0.375};
+    if (plane == 1) return {-1.25, s, r};
+    return {s, r, (1.5 - s - 2 * r) / 4};
+}
+
+TEST(Inclusion, PlanarVertexFaceHandcrafted) {
+    const QueryConfig config{k_delta, 1, 200000};
+    // In the plane z = 0, across the unit face: contact from x = 0 at t = 1/4.
+    QueryResult r = vertex_face_in_plane(moving({-1, 0.2, 0}, {3, 0.2, 0}), k_a, k_b, k_c, 2, config);
+    EXPECT_TRUE(r.hit);
+    EXPECT_LE(r.toi, 0.25);
+    EXPECT_GE(r.toi, 0.25 - 1e-3);
+    // Beside it: a miss. Still and on it: toi 0.
+    EXPECT_FALSE(vertex_face_in_plane(moving({-1, 1.5, 0}, {3, 1.5, 0}), k_a, k_b, k_c, 2, config).hit);
+    r = vertex_face_in_plane(still({0.3, 0.3, 0}), k_a, k_b, k_c, 2, config);
+    EXPECT_TRUE(r.hit);
+    EXPECT_EQ(r.toi, 0);
+    // A face that flattens onto the x axis at t = 1/2 and turns over (c from (0, 1) to
+    // (0, -1)): a point on the axis beyond the face's extent is never inside; one on edge ab is
+    // inside throughout (toi 0); (0.25, -0.25) is inside once c.y <= -1/3, from t = 2/3.
+    const Path folding = moving({0, 1, 0}, {0, -1, 0});
+    EXPECT_FALSE(vertex_face_in_plane(still({2, 0, 0}), k_a, k_b, folding, 2, config).hit);
+    r = vertex_face_in_plane(still({0.5, 0, 0}), k_a, k_b, folding, 2, config);
+    EXPECT_TRUE(r.hit);
+    EXPECT_EQ(r.toi, 0);
+    r = vertex_face_in_plane(still({0.25, -0.25, 0}), k_a, k_b, folding, 2, config);
+    EXPECT_TRUE(r.hit);
+    EXPECT_LE(r.toi, 2.0 / 3);
+    EXPECT_GE(r.toi, 2.0 / 3 - 1e-3);
+    // Reaching the face exactly at t = 1 in the tilted plane (each axis dropped in turn).
+    const Path a = still(on_plane(2, 0, 0)), b = still(on_plane(2, 1, 0)), c = still(on_plane(2, 0, 1));
+    const Path p = moving(on_plane(2, -1, 0.5), on_plane(2, 0, 0.5));
+    for (int drop = 0; drop < 3; ++drop) {
+        r = vertex_face_in_plane(p, a, b, c, drop, config);
+        EXPECT_TRUE(r.hit) << "drop " << drop;
+        EXPECT_GE(r.toi, 1 - 1e-3) << "drop " << drop;
+    }
+}
+
+// Random motions in the three planes, biased toward contact, near misses, flat faces, still
+// features and coordinates far out (seeds printed): wherever the exact test finds the vertex
+// in the face at one of 65 sampled times, the planar query reports contact no later; where the
+// reference finds contact, no later than it; and a hit is within the tolerance at its toi.
+TEST(Inclusion, PlanarVertexFaceAgreesWithExactAndReferenceAnswers) {
+    for (const std::uint64_t seed : testing::sweep_of<std::uint64_t>({31, 32, 33}, 3)) {
+        std::printf("[ seed     ] Inclusion planar queries: seed %llu\n", static_cast<unsigned long long>(seed));
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> unit(0, 1), coordinate(-1, 1);
+        int hits = 0, misses = 0, unchecked = 0;
+        for (int q = 0; q < 120; ++q) {
+            const int plane = q % 3;
+            const int drop = plane == 0 ? 2 : plane == 1 ? 0 : static_cast<int>(q / 3 % 3);
+            const double far = q % 5 == 4 ? 1024 : 0;  // a dyadic offset: still exact
+            std::array<std::array<double, 2>, 4> s0, s1;  // p, a, b, c in plane coordinates
+            for (int k = 0; k < 4; ++k) {  // a face of about 0.4 and a vertex within 1 of it
+                const double spread = k == 0 ? 1.0 : 0.4, step = k == 0 ? 1.0 : 0.2;
+                s0[k] = {far + spread * coordinate(rng), spread * coordinate(rng)};
+                s1[k] = {s0[k][0] + step * coordinate(rng), s0[k][1] + step * coordinate(rng)};
+            }
+            if (q % 7 == 3) s1[2] = s0[2];  // a still corner
+            if (q % 4 == 1) s1[3] = {2 * s1[2][0] - s1[1][0], 2 * s1[2][1] - s1[1][1]};  // a face flat at t = 1
+            // The vertex passes through a point of the face (plus an offset) at time t.
+            const double t = std::max(unit(rng), 1e-3), u = unit(rng), v = unit(rng) * (1 - u);
+            const auto at = [&](int k, int axis) { return s0[k][axis] + t * (s1[k][axis] - s0[k][axis]); };
+            const double offsets[] = {0, 1e-5, 1e-2, 0.8};
+            const double angle = 6.283185307179586 * unit(rng), size = offsets[q % 4];
+            for (int axis = 0; axis < 2; ++axis) {
+                const double target = at(1, axis) + u * (at(2, axis) - at(1, axis)) + v * (at(3, axis) - at(1, axis)) +
+                                      size * (axis == 0 ? std::cos(angle) : std::sin(angle));
+                s1[0][axis] = s0[0][axis] + (target - s0[0][axis]) / t;
+            }
+            std::array<Path, 4> x;
+            for (int k = 0; k < 4; ++k) x[k] = {on_plane(plane, s0[k][0], s0[k][1]), on_plane(plane, s1[k][0], s1[k][1])};
+            const std::string what = "seed " + std::to_string(seed) + " query " + std::to_string(q);
+            const double delta = k_delta * (1 + far * 1e-3);
+            const QueryResult fast = vertex_face_in_plane(x[0], x[1], x[2], x[3], drop, {delta, 1, 200000});
+            for (int k = 0; k <= 64; ++k) {
+                if (!exactly_inside(x[0], x[1], x[2], x[3], drop, mpq_class(k, 64))) continue;
+                EXPECT_TRUE(fast.hit) << what << " inside at " << k << "/64";
+                EXPECT_LE(fast.toi, k / 64.0) << what;
+                break;
+            }
+            const QueryResult slow = reference::vertex_face(x[0], x[1], x[2], x[3], {1e-9, 1, 100000});
+            if (slow.hit && slow.resolved) {
+                EXPECT_TRUE(fast.hit) << what;
+                if (fast.hit) {
+                    EXPECT_LE(fast.toi, slow.toi + 1e-6) << what;
+                }
+            }
+            if (fast.hit) {
+                EXPECT_TRUE(fast.resolved) << what;
+                const QueryResult check = within_at(true, x, fast.toi, delta);
+                EXPECT_TRUE(check.hit) << what << " toi " << fast.toi;
+                unchecked += !check.resolved;
+            }
+            (fast.hit ? hits : misses) += 1;
+        }
+        std::printf("[ counts   ] %d hits, %d misses, %d hits the reference could not confirm\n", hits, misses, unchecked);
+        EXPECT_GT(hits, 25) << "seed " << seed;
+        EXPECT_GT(misses, 15) << "seed " << seed;
+        EXPECT_LE(unchecked, 10) << "seed " << seed;
     }
 }
 

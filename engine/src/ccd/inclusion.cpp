@@ -21,6 +21,7 @@
 #include <cfloat>
 #include <cmath>
 #include <limits>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -323,6 +324,92 @@ QueryResult solve(const Function& f, bool simplex, const QueryConfig& config) {
 
 constexpr double k_error_scale = 512 * 0x1p-53;
 
+// ---- Motion in one plane ----------------------------------------------------------------
+//
+// Where every position lies in one plane, the coplanarity cubic is zero throughout and solve
+// hands the whole interval to the boxes, which then search three parameters on a set of
+// near-zeros as wide as the face. Projected along an axis the plane's normal is not
+// perpendicular to (an affine bijection of the plane, so containment is kept), p(t) lies in
+// the triangle only when the three orientations g_ab(t) = orient2d(a, b, p), g_bc and g_ca
+// have no two strict opposite signs (all of one sign, or all zero on a flat triangle), and
+// only when none is of the strict sign opposite to the area g_ab + g_bc + g_ca where that is
+// non-zero. Each is a product of two linear functions, (b - a)(t) x (p - a)(t): a quadratic
+// whose Bernstein coefficients on [0, 1] are e0 x w0, (e0 x w1 + e1 x w0) / 2 and e1 x w1 over
+// the ends' differences. With M the largest magnitude of a projected coordinate, each
+// difference (at most 2M) is within 2Mu of exact, each cross product within 33 M^2 u and the
+// middle coefficient within 82 M^2 u; the bound used is 1024 M^2 u, plus 64 subnormals for
+// products that underflow, plus 2^-44 times the largest coefficient for the de Casteljau
+// halvings (as in solve). Spans are halved earliest first and dropped where those signs rule
+// contact out; a span narrow enough that F moves by at most δ/4 across it goes to the boxes.
+
+using Quadratic = std::array<double, 3>;
+
+Quadratic orientation(const Path& from, const Path& to, const Path& p, int i, int j) {
+    const auto cross = [&](const Vec3& e, const Vec3& w) { return e[i] * w[j] - e[j] * w[i]; };
+    const Vec3 e0 = to[0] - from[0], e1 = to[1] - from[1];
+    const Vec3 w0 = p[0] - from[0], w1 = p[1] - from[1];
+    return {cross(e0, w0), 0.5 * (cross(e0, w1) + cross(e1, w0)), cross(e1, w1)};
+}
+
+// 1 or -1 when every coefficient lies beyond the bound on that side (the quadratic has that
+// strict sign over the span), else 0.
+int certain_sign(const Quadratic& q, double error) {
+    if (q[0] > error && q[1] > error && q[2] > error) return 1;
+    if (q[0] < -error && q[1] < -error && q[2] < -error) return -1;
+    return 0;
+}
+
+// Whether the signs of the three orientations rule out p in the triangle over the span.
+bool planar_excluded(const std::array<Quadratic, 3>& g, double error) {
+    bool positive = false, negative = false;
+    for (const Quadratic& q : g) {
+        const int sign = certain_sign(q, error);
+        positive = positive || sign > 0;
+        negative = negative || sign < 0;
+    }
+    if (positive && negative) return true;
+    // The area, the sum (three bounds, and the sums' rounding within the halving term).
+    const Quadratic area{g[0][0] + g[1][0] + g[2][0], g[0][1] + g[1][1] + g[2][1], g[0][2] + g[1][2] + g[2][2]};
+    const int sign = certain_sign(area, 4 * error);
+    return (sign > 0 && negative) || (sign < 0 && positive);
+}
+
+std::pair<Quadratic, Quadratic> halves(const Quadratic& q) {
+    const double l = 0.5 * (q[0] + q[1]), r = 0.5 * (q[1] + q[2]), mid = 0.5 * (l + r);
+    return {{q[0], l, mid}, {mid, r, q[2]}};
+}
+
+QueryResult solve_in_plane(const Function& f, const std::array<Quadratic, 3>& whole, double error,
+                           const QueryConfig& config) {
+    QueryResult result;
+    const double speed = (f.dx.cwiseAbs() + f.dy.cwiseAbs() + f.dz.cwiseAbs()).maxCoeff();
+    const double width = speed > 0 ? config.tolerance / (4 * speed) : 1;
+    struct Span {
+        double a, b;
+        std::array<Quadratic, 3> g;
+        int depth;
+    };
+    thread_local std::vector<Span> stack;
+    stack.clear();
+    stack.push_back({0, 1, whole, 0});
+    while (!stack.empty()) {
+        const Span s = stack.back();
+        stack.pop_back();
+        if (s.a > config.t_max) break;  // spans are popped in time order: the rest is later
+        if (planar_excluded(s.g, error)) continue;
+        const double middle = 0.5 * (s.a + s.b);
+        if (s.b - s.a <= width || s.depth >= 60 || !(s.a < middle && middle < s.b)) {
+            if (solve_span(f, true, config, s.a, s.b, result)) return result;
+            continue;
+        }
+        Span early{s.a, middle, {}, s.depth + 1}, late{middle, s.b, {}, s.depth + 1};
+        for (int k = 0; k < 3; ++k) std::tie(early.g[k], late.g[k]) = halves(s.g[k]);
+        stack.push_back(late);
+        stack.push_back(early);
+    }
+    return result;
+}
+
 }  // namespace
 
 MovingPlane::MovingPlane(const Path& a, const Path& b, const Path& c, double largest)
@@ -345,6 +432,20 @@ QueryResult vertex_face(const Path& p, const Path& a, const Path& b, const Path&
     // F = (p - a) + u (a - b) + v (a - c).
     const Vec3 magnitude = largest_magnitude({&p, &a, &b, &c});
     return solve(make_function(p, a, a, b, a, c, k_error_scale, magnitude), true, config);
+}
+
+QueryResult vertex_face_in_plane(const Path& p, const Path& a, const Path& b, const Path& c, int drop,
+                                 const QueryConfig& config) {
+    const Vec3 magnitude = largest_magnitude({&p, &a, &b, &c});
+    const Function f = make_function(p, a, a, b, a, c, k_error_scale, magnitude);
+    const int i = (drop + 1) % 3, j = (drop + 2) % 3;
+    const std::array<Quadratic, 3> g{orientation(a, b, p, i, j), orientation(b, c, p, i, j), orientation(c, a, p, i, j)};
+    double size = 0;
+    for (const Quadratic& q : g) size = std::max({size, std::abs(q[0]), std::abs(q[1]), std::abs(q[2])});
+    const double largest = std::max(magnitude[i], magnitude[j]);
+    const double error = 1024 * largest * largest * 0x1p-53 + 0x1p-44 * size + 64 * std::numeric_limits<double>::denorm_min();
+    if (!std::isfinite(error)) return solve(f, true, config);
+    return solve_in_plane(f, g, error, config);
 }
 
 QueryResult edge_edge(const Path& p0, const Path& p1, const Path& q0, const Path& q1, const QueryConfig& config) {

@@ -34,15 +34,16 @@ bool touching(const PairMotion& m, int end) {
 
 bool shares(const TriIndices& t, std::uint32_t v) { return t[0] == v || t[1] == v || t[2] == v; }
 
-// True when all twelve positions (both triangles at both ends) lie in one plane, decided
-// exactly: then every position in between does too (an affine combination of them), and two
-// triangles in a plane that first touch do so with a vertex of one on the other's border, so
-// the vertex-face queries find every first contact and the edge-edge ones (whose zero sets, for
-// nearly parallel edges in a plane, are long curves that cost the inclusion search dearly) are
-// not needed. Not for two triangles of one object sharing a vertex: the self rule skips the
+// When all twelve positions (both triangles at both ends) lie in one plane, decided exactly,
+// an axis the plane's normal has a non-zero component along (else -1): then every position in
+// between lies in the plane too (an affine combination of them), and two triangles in a plane
+// that first touch do so with a vertex of one on the other's border, so the vertex-face
+// queries, in their planar form, find every first contact and the edge-edge ones (whose zero
+// sets, for nearly parallel edges in a plane, are long curves that cost the inclusion search
+// dearly) are not needed. Not for two triangles of one object sharing a vertex: the self rule skips the
 // queries of shared vertices, and such a pair can start to overlap at a shared vertex (one
 // triangle folding through it) where only an edge-edge query sees it.
-bool coplanar_motion(const PairMotion& m) {
+int coplanar_motion(const PairMotion& m) {
     std::array<Vec3, 12> points;
     for (int i = 0; i < 3; ++i) {
         for (int end = 0; end < 2; ++end) {
@@ -54,21 +55,21 @@ bool coplanar_motion(const PairMotion& m) {
     for (int k = 0; k < 3; ++k) {  // the common case: one coordinate shared by every point
         bool same = true;
         for (const Vec3& p : points) same = same && p[k] == points[0][k];
-        if (same) return true;
+        if (same) return k;
     }
     for (int i = 1; i < 12; ++i) {
         for (int j = i + 1; j < 12; ++j) {
             // Not on one line, decided exactly: a non-zero orientation in some projection.
-            bool triangle = false;
-            for (int drop = 0; drop < 3 && !triangle; ++drop) triangle = orient2d(points[0], points[i], points[j], drop) != 0;
-            if (!triangle) continue;
+            int drop = 0;
+            while (drop < 3 && orient2d(points[0], points[i], points[j], drop) == 0) ++drop;
+            if (drop == 3) continue;
             for (const Vec3& p : points) {
-                if (orient3d(points[0], points[i], points[j], p) != 0) return false;
+                if (orient3d(points[0], points[i], points[j], p) != 0) return -1;
             }
-            return true;
+            return drop;
         }
     }
-    return false;  // all on a line or a point: the general queries decide
+    return -1;  // all on a line or a point: the general queries decide
 }
 
 // Whether the corners of `points` (those not shared with `face`, for self: the shared ones lie
@@ -223,20 +224,24 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
         config.t_max = out.toi;  // only an earlier contact matters now
         config.max_boxes = std::min(max_boxes, k_after_contact);
     };
+    const int plane_axis = sharing ? -1 : coplanar_motion(m);
+    const auto vertex_query = [&](const Path& p, const std::array<Path, 3>& face) {
+        return plane_axis >= 0 ? vertex_face_in_plane(p, face[0], face[1], face[2], plane_axis, config)
+                               : vertex_face(p, face[0], face[1], face[2], config);
+    };
     // Each vertex of one against the other's face (not a vertex of that face, for self).
     for (int i = 0; i < 3; ++i) {
         if (!(m.self && shares(m.ib, m.ia[i])) && point_a[i].overlaps(face_b) &&
             !vertex_clear_of_face(m.a[i], m.b, largest)) {
-            record(vertex_face(m.a[i], m.b[0], m.b[1], m.b[2], config));
+            record(vertex_query(m.a[i], m.b));
         }
         if (!(m.self && shares(m.ia, m.ib[i])) && point_b[i].overlaps(face_a) &&
             !vertex_clear_of_face(m.b[i], m.a, largest)) {
-            record(vertex_face(m.b[i], m.a[0], m.a[1], m.a[2], config));
+            record(vertex_query(m.b[i], m.a));
         }
     }
-    // Each edge against each edge (not sharing a vertex, for self).
-    const bool planar = !sharing && coplanar_motion(m);
-    for (int i = 0; i < 3 && !planar; ++i) {
+    // Each edge against each edge (not sharing a vertex, for self), unless in one plane.
+    for (int i = 0; i < 3 && plane_axis < 0; ++i) {
         const int i1 = (i + 1) % 3;
         Bounds edge_a = point_a[i];
         edge_a.grow(m.a[i1]);
