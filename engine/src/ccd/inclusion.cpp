@@ -295,12 +295,12 @@ QueryResult solve(const Function& f, bool simplex, const QueryConfig& config) {
         std::array<double, 4> c;
         int depth;
     };
-    thread_local std::vector<Span> stack;
-    stack.clear();
-    stack.push_back({0, 1, whole, 0});
-    while (!stack.empty()) {
-        const Span s = stack.back();
-        stack.pop_back();
+    // Each halving pops one span and pushes two, at most 60 deep: at most 61 spans wait.
+    std::array<Span, 64> stack;
+    int waiting = 0;
+    stack[waiting++] = {0, 1, whole, 0};
+    while (waiting > 0) {
+        const Span s = stack[--waiting];
         if (s.a > config.t_max) break;  // the stack holds spans in time order: the rest is later
         const auto beyond = [&](double sign) {
             return sign * s.c[0] > error && sign * s.c[1] > error && sign * s.c[2] > error && sign * s.c[3] > error;
@@ -316,8 +316,8 @@ QueryResult solve(const Function& f, bool simplex, const QueryConfig& config) {
         }
         const double l1 = 0.5 * (s.c[0] + s.c[1]), m = 0.5 * (s.c[1] + s.c[2]), r2 = 0.5 * (s.c[2] + s.c[3]);
         const double l2 = 0.5 * (l1 + m), r1 = 0.5 * (m + r2), mid = 0.5 * (l2 + r1);
-        stack.push_back({middle, s.b, {mid, r1, r2, s.c[3]}, s.depth + 1});
-        stack.push_back({s.a, middle, {s.c[0], l1, l2, mid}, s.depth + 1});
+        stack[waiting++] = {middle, s.b, {mid, r1, r2, s.c[3]}, s.depth + 1};
+        stack[waiting++] = {s.a, middle, {s.c[0], l1, l2, mid}, s.depth + 1};
     }
     return result;
 }
@@ -389,12 +389,11 @@ QueryResult solve_in_plane(const Function& f, const std::array<Quadratic, 3>& wh
         std::array<Quadratic, 3> g;
         int depth;
     };
-    thread_local std::vector<Span> stack;
-    stack.clear();
-    stack.push_back({0, 1, whole, 0});
-    while (!stack.empty()) {
-        const Span s = stack.back();
-        stack.pop_back();
+    std::array<Span, 64> stack;  // at most 61 wait, as in solve
+    int waiting = 0;
+    stack[waiting++] = {0, 1, whole, 0};
+    while (waiting > 0) {
+        const Span s = stack[--waiting];
         if (s.a > config.t_max) break;  // spans are popped in time order: the rest is later
         if (planar_excluded(s.g, error)) continue;
         const double middle = 0.5 * (s.a + s.b);
@@ -404,8 +403,8 @@ QueryResult solve_in_plane(const Function& f, const std::array<Quadratic, 3>& wh
         }
         Span early{s.a, middle, {}, s.depth + 1}, late{middle, s.b, {}, s.depth + 1};
         for (int k = 0; k < 3; ++k) std::tie(early.g[k], late.g[k]) = halves(s.g[k]);
-        stack.push_back(late);
-        stack.push_back(early);
+        stack[waiting++] = late;
+        stack[waiting++] = early;
     }
     return result;
 }
