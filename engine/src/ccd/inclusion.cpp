@@ -267,6 +267,70 @@ double coplanarity_error(double largest) {
     return 4096 * largest * largest * largest * 0x1p-53 + 64 * std::numeric_limits<double>::denorm_min();
 }
 
+// A cubic's value at tau in [0, 1] from its Bernstein coefficients (de Casteljau's rule); for a
+// dyadic tau, 1 - tau is exact, and each of the three levels of convex combinations adds at most
+// 3u times the largest coefficient to the value's error.
+double bernstein_value(const std::array<double, 4>& c, double tau) {
+    const double u = 1 - tau;
+    const double b0 = u * c[0] + tau * c[1], b1 = u * c[1] + tau * c[2], b2 = u * c[2] + tau * c[3];
+    const double d0 = u * b0 + tau * b1, d1 = u * b1 + tau * b2;
+    return u * d0 + tau * d1;
+}
+
+// Where a span of the coplanarity cubic holds exactly one root, the span of the width halving
+// would reach (2^-levels of it) that holds the root, found at once instead of by `levels`
+// halvings; nothing (-1) where that is not certain. Exactly one root: every coefficient lies
+// beyond the bound and their signs change once (a polynomial has at most as many roots in a
+// span as its Bernstein coefficients have sign changes, and as many modulo 2). The root is
+// approximated in double (regula falsi, Illinois variant), and its cell certified: the cubic's
+// value at the cell's first time has the span's first sign and at its last time the span's last
+// sign, each beyond the bound (plus the evaluation's own rounding). Then the rest of the span
+// holds no root (an even number of roots on each side of the cell, out of exactly one) and so
+// no contact. Returns the cell's index among the 2^levels.
+double root_cell(const std::array<double, 4>& c, double error, int levels) {
+    double largest = 0;
+    for (const double k : c) {
+        if (!(std::abs(k) > error)) return -1;
+        largest = std::max(largest, std::abs(k));
+    }
+    const int changes = ((c[0] > 0) != (c[1] > 0)) + ((c[1] > 0) != (c[2] > 0)) + ((c[2] > 0) != (c[3] > 0));
+    if (changes != 1) return -1;
+    double lo = 0, hi = 1, f_lo = c[0], f_hi = c[3];
+    int kept = 0;  // which end the last two steps kept: the Illinois rule halves its value
+    const double cells = std::ldexp(1.0, levels);
+    // Until the bracket lies in one cell (or is a quarter of one wide, the root near an edge).
+    const double resolution = std::ldexp(1.0, -levels - 2);
+    for (int step = 0; step < 64 && hi - lo > resolution && std::floor(lo * cells) != std::floor(hi * cells); ++step) {
+        double tau = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+        if (!(lo < tau && tau < hi)) tau = 0.5 * (lo + hi);
+        const double value = bernstein_value(c, tau);
+        if (value == 0) {
+            lo = hi = tau;
+            break;
+        }
+        if ((value > 0) == (f_lo > 0)) {
+            lo = tau;
+            f_lo = value;
+            if (kept == 1) f_hi *= 0.5;
+            kept = 1;
+        } else {
+            hi = tau;
+            f_hi = value;
+            if (kept == -1) f_lo *= 0.5;
+            kept = -1;
+        }
+    }
+    const double cell = std::min(std::floor(0.5 * (lo + hi) * cells), cells - 1);
+    const double bound = error + 16 * 0x1p-53 * largest;
+    const auto certain = [&](double tau, double sign) {
+        const double value = bernstein_value(c, tau);
+        return sign * value > bound;
+    };
+    if (cell > 0 && !certain(cell / cells, c[0] > 0 ? 1 : -1)) return -1;
+    if (cell + 1 < cells && !certain((cell + 1) / cells, c[3] > 0 ? 1 : -1)) return -1;
+    return cell;
+}
+
 // The solver. `simplex`: the domain is u + v <= 1 (vertex-face), else the unit square.
 //
 // First the times: F = 0 needs X(t), Y(t) and Z(t) linearly dependent (X = -uY - vZ), so
@@ -313,6 +377,19 @@ QueryResult solve(const Function& f, bool simplex, const QueryConfig& config) {
         if (flat || s.b - s.a <= width || s.depth >= 60 || !(s.a < middle && middle < s.b)) {
             if (solve_span(f, simplex, config, s.a, s.b, result)) return result;
             continue;
+        }
+        // The halvings down to the width, skipped where the span holds one certain root: its
+        // cell's ends are dyadic (the span's are, and its depth plus the levels stays below
+        // 53 bits), so they are exact.
+        const double ratio = (s.b - s.a) / width;  // > 1 here: halvings needed, ceil(log2), or one more
+        const int levels = std::isfinite(ratio) ? std::ilogb(ratio) + 1 : 64;
+        if (levels >= 3 && s.depth + levels < 50) {
+            const double cell = root_cell(s.c, error, levels);
+            if (cell >= 0) {
+                const double step = std::ldexp(s.b - s.a, -levels);
+                if (solve_span(f, simplex, config, s.a + cell * step, s.a + (cell + 1) * step, result)) return result;
+                continue;
+            }
         }
         const double l1 = 0.5 * (s.c[0] + s.c[1]), m = 0.5 * (s.c[1] + s.c[2]), r2 = 0.5 * (s.c[2] + s.c[3]);
         const double l2 = 0.5 * (l1 + m), r1 = 0.5 * (m + r2), mid = 0.5 * (l2 + r1);
