@@ -28,6 +28,12 @@ int orient2d(const Vec3& a, const Vec3& b, const Vec3& c, int drop);
 bool triangles_intersect(const Vec3& a0, const Vec3& a1, const Vec3& a2,
                          const Vec3& b0, const Vec3& b1, const Vec3& b2);
 
+/// triangles_intersect for two triangles whose six corners are known to lie exactly in one
+/// plane: the same answer, without the six plane-side orientations (each zero, and each costly
+/// to prove zero in exact arithmetic).
+bool coplanar_triangles_intersect(const Vec3& a0, const Vec3& a1, const Vec3& a2,
+                                  const Vec3& b0, const Vec3& b1, const Vec3& b2);
+
 /// Self-collision rule for two triangles of one object (DESIGN.md): when they share vertex
 /// indices they collide only if their intersection holds a point outside the convex hull of
 /// the shared vertices; identical index sets never collide; with no shared index this is

@@ -267,35 +267,39 @@ double coplanarity_error(double largest) {
     return 4096 * largest * largest * largest * 0x1p-53 + 64 * std::numeric_limits<double>::denorm_min();
 }
 
-// A cubic's value at tau in [0, 1] from its Bernstein coefficients (de Casteljau's rule); for a
-// dyadic tau, 1 - tau is exact, and each of the three levels of convex combinations adds at most
-// 3u times the largest coefficient to the value's error.
-double bernstein_value(const std::array<double, 4>& c, double tau) {
+// A polynomial's value at tau in [0, 1] from its Bernstein coefficients (de Casteljau's rule);
+// for a dyadic tau, 1 - tau is exact, and each level of convex combinations (at most three)
+// adds at most 3u times the largest coefficient to the value's error.
+template <std::size_t N>
+double bernstein_value(std::array<double, N> c, double tau) {
     const double u = 1 - tau;
-    const double b0 = u * c[0] + tau * c[1], b1 = u * c[1] + tau * c[2], b2 = u * c[2] + tau * c[3];
-    const double d0 = u * b0 + tau * b1, d1 = u * b1 + tau * b2;
-    return u * d0 + tau * d1;
+    for (std::size_t level = 1; level < N; ++level) {
+        for (std::size_t i = 0; i + level < N; ++i) c[i] = u * c[i] + tau * c[i + 1];
+    }
+    return c[0];
 }
 
-// Where a span of the coplanarity cubic holds exactly one root, the span of the width halving
-// would reach (2^-levels of it) that holds the root, found at once instead of by `levels`
-// halvings; nothing (-1) where that is not certain. Exactly one root: every coefficient lies
-// beyond the bound and their signs change once (a polynomial has at most as many roots in a
-// span as its Bernstein coefficients have sign changes, and as many modulo 2). The root is
-// approximated in double (regula falsi, Illinois variant), and its cell certified: the cubic's
-// value at the cell's first time has the span's first sign and at its last time the span's last
-// sign, each beyond the bound (plus the evaluation's own rounding). Then the rest of the span
-// holds no root (an even number of roots on each side of the cell, out of exactly one) and so
-// no contact. Returns the cell's index among the 2^levels.
-double root_cell(const std::array<double, 4>& c, double error, int levels) {
+// Where a span of a polynomial (the coplanarity cubic, or an orientation quadratic) holds
+// exactly one root, the cell of the width halving would reach (2^-levels of the span) that holds
+// the root, found at once instead of by `levels` halvings; nothing (-1) where that is not
+// certain. Exactly one root: every coefficient lies beyond the bound and their signs change
+// once (a polynomial has at most as many roots in a span as its Bernstein coefficients have sign
+// changes, and as many modulo 2). The root is approximated in double (regula falsi, Illinois
+// variant), and its cell certified: the value at the cell's first time has the span's first
+// sign and at its last time the span's last sign, each beyond the bound (plus the evaluation's
+// own rounding). Then the rest of the span holds no root (an even number of roots on each side
+// of the cell, out of exactly one). Returns the cell's index among the 2^levels.
+template <std::size_t N>
+double root_cell(const std::array<double, N>& c, double error, int levels) {
     double largest = 0;
-    for (const double k : c) {
-        if (!(std::abs(k) > error)) return -1;
-        largest = std::max(largest, std::abs(k));
+    int changes = 0;
+    for (std::size_t i = 0; i < N; ++i) {
+        if (!(std::abs(c[i]) > error)) return -1;
+        largest = std::max(largest, std::abs(c[i]));
+        if (i > 0) changes += (c[i] > 0) != (c[i - 1] > 0);
     }
-    const int changes = ((c[0] > 0) != (c[1] > 0)) + ((c[1] > 0) != (c[2] > 0)) + ((c[2] > 0) != (c[3] > 0));
     if (changes != 1) return -1;
-    double lo = 0, hi = 1, f_lo = c[0], f_hi = c[3];
+    double lo = 0, hi = 1, f_lo = c[0], f_hi = c[N - 1];
     int kept = 0;  // which end the last two steps kept: the Illinois rule halves its value
     const double cells = std::ldexp(1.0, levels);
     // Until the bracket lies in one cell (or is a quarter of one wide, the root near an edge).
@@ -327,7 +331,7 @@ double root_cell(const std::array<double, 4>& c, double error, int levels) {
         return sign * value > bound;
     };
     if (cell > 0 && !certain(cell / cells, c[0] > 0 ? 1 : -1)) return -1;
-    if (cell + 1 < cells && !certain((cell + 1) / cells, c[3] > 0 ? 1 : -1)) return -1;
+    if (cell + 1 < cells && !certain((cell + 1) / cells, c[N - 1] > 0 ? 1 : -1)) return -1;
     return cell;
 }
 
@@ -477,6 +481,34 @@ QueryResult solve_in_plane(const Function& f, const std::array<Quadratic, 3>& wh
         if (s.b - s.a <= width || s.depth >= 60 || !(s.a < middle && middle < s.b)) {
             if (solve_span(f, true, config, s.a, s.b, result)) return result;
             continue;
+        }
+        // The vertex crossing one edge's line while it stays strictly on the inner side of the
+        // other two: those two orientations of one certain sign, the third crossing zero once.
+        // Entering (the third starts of the opposite sign), the contact starts at its root:
+        // before it the signs conflict, after it all three agree (and so does the area, their
+        // sum). Leaving, the vertex is inside at the span's start. Either way one cell of the
+        // width halving holds the first contact, as in solve (dyadic ends, exact).
+        const double ratio = (s.b - s.a) / width;
+        const int levels = std::isfinite(ratio) ? std::ilogb(ratio) + 1 : 64;
+        if (levels >= 3 && s.depth + levels < 50) {
+            int crossing = -1, inner = 0, certain = 0;
+            for (int k = 0; k < 3; ++k) {
+                const int sign = certain_sign(s.g[k], error);
+                if (sign == 0) crossing = k;
+                certain += sign != 0;
+                inner += sign;
+            }
+            if (certain == 2 && (inner == 2 || inner == -2)) {
+                const Quadratic& q = s.g[crossing];
+                const double cell = root_cell(q, error, levels);
+                if (cell >= 0) {
+                    const bool entering = (q[0] > 0) != (inner > 0);
+                    const double step = std::ldexp(s.b - s.a, -levels);
+                    const double first = entering ? cell : 0;
+                    if (solve_span(f, true, config, s.a + first * step, s.a + (first + 1) * step, result)) return result;
+                    if (entering) continue;  // only past t_max; leaving, the same (else halved)
+                }
+            }
         }
         Span early{s.a, middle, {}, s.depth + 1}, late{middle, s.b, {}, s.depth + 1};
         for (int k = 0; k < 3; ++k) std::tie(early.g[k], late.g[k]) = halves(s.g[k]);

@@ -25,9 +25,12 @@ struct Bounds {
     bool overlaps(const Bounds& o) const { return (lo.array() <= o.hi.array()).all() && (o.lo.array() <= hi.array()).all(); }
 };
 
-bool touching(const PairMotion& m, int end) {
+// The exact per-frame test at one end; `planar`: all twelve positions lie in one plane (and
+// the triangles share no vertex, where the self rule is triangles_intersect).
+bool touching(const PairMotion& m, int end, bool planar) {
     const std::array<Vec3, 3> a{m.a[0][end], m.a[1][end], m.a[2][end]};
     const std::array<Vec3, 3> b{m.b[0][end], m.b[1][end], m.b[2][end]};
+    if (planar) return coplanar_triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2]);
     if (m.self) return self_triangles_collide(m.ia, a, m.ib, b);
     return triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2]);
 }
@@ -191,14 +194,20 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
     for (int i = 0; i < 3; ++i) {
         for (int end = 0; end < 2; ++end) largest = std::max({largest, m.a[i][end].cwiseAbs().maxCoeff(), m.b[i][end].cwiseAbs().maxCoeff()});
     }
-    if (separated(m.b, m.ib, m.a, m.ia, m.self, largest) || separated(m.a, m.ia, m.b, m.ib, m.self, largest)) return out;
-    // Two triangles of one object sharing a vertex are never apart along a direction.
     const bool sharing = m.self && (shares(m.ib, m.ia[0]) || shares(m.ib, m.ia[1]) || shares(m.ib, m.ia[2]));
-    if (!sharing && triangles_apart(m, largest)) return out;
-    if (touching(m, 0)) {
+    const int plane_axis = sharing ? -1 : coplanar_motion(m);
+    const bool planar = plane_axis >= 0;
+    // In one plane the planes' sides are zero and the fixed directions seldom part a pair
+    // (on dense coplanar contact they cost more than they saved): the planar queries decide.
+    if (!planar) {
+        if (separated(m.b, m.ib, m.a, m.ia, m.self, largest) || separated(m.a, m.ia, m.b, m.ib, m.self, largest)) return out;
+        // Two triangles of one object sharing a vertex are never apart along a direction.
+        if (!sharing && triangles_apart(m, largest)) return out;
+    }
+    if (touching(m, 0, planar)) {
         out.contact = out.start_contact = true;
         out.toi = 0;
-        out.end_contact = touching(m, 1);
+        out.end_contact = touching(m, 1, planar);
         return out;
     }
     Bounds face_a, face_b;
@@ -224,24 +233,23 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
         config.t_max = out.toi;  // only an earlier contact matters now
         config.max_boxes = std::min(max_boxes, k_after_contact);
     };
-    const int plane_axis = sharing ? -1 : coplanar_motion(m);
     const auto vertex_query = [&](const Path& p, const std::array<Path, 3>& face) {
-        return plane_axis >= 0 ? vertex_face_in_plane(p, face[0], face[1], face[2], plane_axis, config)
+        return planar ? vertex_face_in_plane(p, face[0], face[1], face[2], plane_axis, config)
                                : vertex_face(p, face[0], face[1], face[2], config);
     };
     // Each vertex of one against the other's face (not a vertex of that face, for self).
     for (int i = 0; i < 3; ++i) {
         if (!(m.self && shares(m.ib, m.ia[i])) && point_a[i].overlaps(face_b) &&
-            !vertex_clear_of_face(m.a[i], m.b, largest)) {
+            (planar || !vertex_clear_of_face(m.a[i], m.b, largest))) {
             record(vertex_query(m.a[i], m.b));
         }
         if (!(m.self && shares(m.ia, m.ib[i])) && point_b[i].overlaps(face_a) &&
-            !vertex_clear_of_face(m.b[i], m.a, largest)) {
+            (planar || !vertex_clear_of_face(m.b[i], m.a, largest))) {
             record(vertex_query(m.b[i], m.a));
         }
     }
     // Each edge against each edge (not sharing a vertex, for self), unless in one plane.
-    for (int i = 0; i < 3 && plane_axis < 0; ++i) {
+    for (int i = 0; i < 3 && !planar; ++i) {
         const int i1 = (i + 1) % 3;
         Bounds edge_a = point_a[i];
         edge_a.grow(m.a[i1]);
@@ -255,7 +263,7 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
             }
         }
     }
-    if (out.contact) out.end_contact = touching(m, 1);
+    if (out.contact) out.end_contact = touching(m, 1, planar);
     return out;
 }
 

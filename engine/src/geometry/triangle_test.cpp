@@ -48,6 +48,19 @@ bool separated_in_plane(const Vec3& a0, const Vec3& a1, const Vec3& a2, const Ve
 
 bool all_zero(const int s[3]) { return s[0] == 0 && s[1] == 0 && s[2] == 0; }
 
+/// Whether an edge of one triangle meets the other, given each corner's side of the other's
+/// plane.
+bool edges_meet(const Vec3& a0, const Vec3& a1, const Vec3& a2, const int side_a[3], const Vec3& b0, const Vec3& b1,
+                const Vec3& b2, const int side_b[3]) {
+    using contact::segment_intersects_triangle;
+    return segment_intersects_triangle(a0, a1, side_a[0], side_a[1], b0, b1, b2) ||
+           segment_intersects_triangle(a1, a2, side_a[1], side_a[2], b0, b1, b2) ||
+           segment_intersects_triangle(a2, a0, side_a[2], side_a[0], b0, b1, b2) ||
+           segment_intersects_triangle(b0, b1, side_b[0], side_b[1], a0, a1, a2) ||
+           segment_intersects_triangle(b1, b2, side_b[1], side_b[2], a0, a1, a2) ||
+           segment_intersects_triangle(b2, b0, side_b[2], side_b[0], a0, a1, a2);
+}
+
 }  // namespace
 
 bool triangles_intersect(const Vec3& a0, const Vec3& a1, const Vec3& a2,
@@ -61,18 +74,17 @@ bool triangles_intersect(const Vec3& a0, const Vec3& a1, const Vec3& a2,
                            orient3d(a0, a1, a2, b2)};
     if (strictly_one_side(side_b)) return false;
 
-    if (all_zero(side_a) && all_zero(side_b)) {  // coplanar, or a degenerate triangle
-        const int drop = contact::projection_axis(a0, a1, a2);
-        if (drop >= 0 && separated_in_plane(a0, a1, a2, b0, b1, b2, drop)) return false;
-    }
+    if (all_zero(side_a) && all_zero(side_b)) return coplanar_triangles_intersect(a0, a1, a2, b0, b1, b2);
+    return edges_meet(a0, a1, a2, side_a, b0, b1, b2, side_b);
+}
 
-    using contact::segment_intersects_triangle;
-    return segment_intersects_triangle(a0, a1, side_a[0], side_a[1], b0, b1, b2) ||
-           segment_intersects_triangle(a1, a2, side_a[1], side_a[2], b0, b1, b2) ||
-           segment_intersects_triangle(a2, a0, side_a[2], side_a[0], b0, b1, b2) ||
-           segment_intersects_triangle(b0, b1, side_b[0], side_b[1], a0, a1, a2) ||
-           segment_intersects_triangle(b1, b2, side_b[1], side_b[2], a0, a1, a2) ||
-           segment_intersects_triangle(b2, b0, side_b[2], side_b[0], a0, a1, a2);
+bool coplanar_triangles_intersect(const Vec3& a0, const Vec3& a1, const Vec3& a2,
+                                  const Vec3& b0, const Vec3& b1, const Vec3& b2) {
+    // Coplanar, or a degenerate triangle: every side is zero.
+    const int drop = contact::projection_axis(a0, a1, a2);
+    if (drop >= 0 && separated_in_plane(a0, a1, a2, b0, b1, b2, drop)) return false;
+    constexpr int zero[3] = {0, 0, 0};
+    return edges_meet(a0, a1, a2, zero, b0, b1, b2, zero);
 }
 
 }  // namespace collidescope
