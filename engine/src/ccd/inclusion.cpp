@@ -279,13 +279,23 @@ double bernstein_value(std::array<double, N> c, double tau) {
     return c[0];
 }
 
+// The value and the derivative (in tau) at tau, both from de Casteljau's rule.
+template <std::size_t N>
+std::pair<double, double> bernstein_value_and_slope(std::array<double, N> c, double tau) {
+    const double u = 1 - tau;
+    for (std::size_t level = 1; level + 1 < N; ++level) {
+        for (std::size_t i = 0; i + level < N; ++i) c[i] = u * c[i] + tau * c[i + 1];
+    }
+    return {u * c[0] + tau * c[1], static_cast<double>(N - 1) * (c[1] - c[0])};
+}
+
 // Where a span of a polynomial (the coplanarity cubic, or an orientation quadratic) holds
 // exactly one root, the cell of the width halving would reach (2^-levels of the span) that holds
 // the root, found at once instead of by `levels` halvings; nothing (-1) where that is not
 // certain. Exactly one root: every coefficient lies beyond the bound and their signs change
 // once (a polynomial has at most as many roots in a span as its Bernstein coefficients have sign
-// changes, and as many modulo 2). The root is approximated in double (regula falsi, Illinois
-// variant), and its cell certified: the value at the cell's first time has the span's first
+// changes, and as many modulo 2). The root is approximated in double (Newton's method, no
+// guarantee needed), and its cell certified: the value at the cell's first time has the span's first
 // sign and at its last time the span's last sign, each beyond the bound (plus the evaluation's
 // own rounding). Then the rest of the span holds no root (an even number of roots on each side
 // of the cell, out of exactly one). Returns the cell's index among the 2^levels.
@@ -299,35 +309,22 @@ double root_cell(const std::array<double, N>& c, double error, int levels) {
         if (i > 0) changes += (c[i] > 0) != (c[i - 1] > 0);
     }
     if (changes != 1) return -1;
-    double lo = 0, hi = 1, f_lo = c[0], f_hi = c[N - 1];
-    int kept = 0;  // which end the last two steps kept: the Illinois rule halves its value
-    const double cells = std::ldexp(1.0, levels);
-    // Until the bracket lies in one cell (or is a quarter of one wide, the root near an edge).
-    const double resolution = std::ldexp(1.0, -levels - 2);
-    for (int step = 0; step < 64 && hi - lo > resolution && std::floor(lo * cells) != std::floor(hi * cells); ++step) {
-        double tau = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-        if (!(lo < tau && tau < hi)) tau = 0.5 * (lo + hi);
-        const double value = bernstein_value(c, tau);
-        if (value == 0) {
-            lo = hi = tau;
-            break;
-        }
-        if ((value > 0) == (f_lo > 0)) {
-            lo = tau;
-            f_lo = value;
-            if (kept == 1) f_hi *= 0.5;
-            kept = 1;
-        } else {
-            hi = tau;
-            f_hi = value;
-            if (kept == -1) f_lo *= 0.5;
-            kept = -1;
-        }
+    // From the chord's root, Newton's steps (the derivative from the last level of de
+    // Casteljau's rule), until a step moves less than a sixteenth of a cell.
+    const double cells = std::ldexp(1.0, levels), resolution = std::ldexp(1.0, -levels - 4);
+    double tau = c[0] / (c[0] - c[N - 1]);
+    for (int step = 0; step < 8 && std::isfinite(tau); ++step) {
+        const auto [value, slope] = bernstein_value_and_slope(c, tau);
+        const double next = std::clamp(tau - value / slope, 0.0, 1.0);
+        const bool settled = !(std::abs(next - tau) > resolution);
+        tau = next;
+        if (settled) break;
     }
-    const double cell = std::min(std::floor(0.5 * (lo + hi) * cells), cells - 1);
+    if (!std::isfinite(tau)) return -1;
+    const double cell = std::min(std::floor(tau * cells), cells - 1);
     const double bound = error + 16 * 0x1p-53 * largest;
-    const auto certain = [&](double tau, double sign) {
-        const double value = bernstein_value(c, tau);
+    const auto certain = [&](double at, double sign) {
+        const double value = bernstein_value(c, at);
         return sign * value > bound;
     };
     if (cell > 0 && !certain(cell / cells, c[0] > 0 ? 1 : -1)) return -1;
