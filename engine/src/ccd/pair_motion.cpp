@@ -46,7 +46,7 @@ bool shares(const TriIndices& t, std::uint32_t v) { return t[0] == v || t[1] == 
 // dearly) are not needed. Not for two triangles of one object sharing a vertex: the self rule skips the
 // queries of shared vertices, and such a pair can start to overlap at a shared vertex (one
 // triangle folding through it) where only an edge-edge query sees it.
-int coplanar_motion(const PairMotion& m) {
+std::array<Vec3, 12> positions(const PairMotion& m) {
     std::array<Vec3, 12> points;
     for (int i = 0; i < 3; ++i) {
         for (int end = 0; end < 2; ++end) {
@@ -54,12 +54,31 @@ int coplanar_motion(const PairMotion& m) {
             points[6 + i * 2 + end] = m.b[i][end];
         }
     }
-    // A plane: the first point and two more that make a non-degenerate triangle with it.
-    for (int k = 0; k < 3; ++k) {  // the common case: one coordinate shared by every point
-        bool same = true;
-        for (const Vec3& p : points) same = same && p[k] == points[0][k];
-        if (same) return k;
+    return points;
+}
+
+// The common case of coplanar_motion, cheap enough to ask of every pair: one coordinate shared
+// by all twelve positions (that axis), else -1.
+int shared_coordinate(const PairMotion& m) {
+    const auto same = [&](int k) {
+        const double value = m.a[0][0][k];
+        for (const std::array<Path, 3>* t : {&m.a, &m.b}) {
+            for (const Path& path : *t) {
+                if (path[0][k] != value || path[1][k] != value) return false;  // most pairs: at once
+            }
+        }
+        return true;
+    };
+    for (int k = 0; k < 3; ++k) {
+        if (same(k)) return k;
     }
+    return -1;
+}
+
+int coplanar_motion(const PairMotion& m) {
+    if (const int k = shared_coordinate(m); k >= 0) return k;
+    const std::array<Vec3, 12> points = positions(m);
+    // A plane: the first point and two more that make a non-degenerate triangle with it.
     for (int i = 1; i < 12; ++i) {
         for (int j = i + 1; j < 12; ++j) {
             // Not on one line, decided exactly: a non-zero orientation in some projection.
@@ -195,21 +214,23 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
         for (int end = 0; end < 2; ++end) largest = std::max({largest, m.a[i][end].cwiseAbs().maxCoeff(), m.b[i][end].cwiseAbs().maxCoeff()});
     }
     const bool sharing = m.self && (shares(m.ib, m.ia[0]) || shares(m.ib, m.ia[1]) || shares(m.ib, m.ia[2]));
-    const int plane_axis = sharing ? -1 : coplanar_motion(m);
-    const bool planar = plane_axis >= 0;
-    // In one plane the planes' sides are zero and the fixed directions seldom part a pair
-    // (on dense coplanar contact they cost more than they saved): the planar queries decide.
-    if (!planar) {
-        if (separated(m.b, m.ib, m.a, m.ia, m.self, largest) || separated(m.a, m.ia, m.b, m.ib, m.self, largest)) return out;
-        // Two triangles of one object sharing a vertex are never apart along a direction.
-        if (!sharing && triangles_apart(m, largest)) return out;
-    }
-    if (touching(m, 0, planar)) {
+    // In one plane the planes' sides are zero and the fixed directions seldom part a pair (on
+    // dense coplanar contact they cost more than they saved): the planar queries decide. The
+    // plane's common case (one coordinate shared) is asked first; the general exact test only
+    // of the pairs that reach the queries (on a character, whose neighbouring triangles are
+    // nearly coplanar, its exact orientations are costly).
+    if (separated(m.b, m.ib, m.a, m.ia, m.self, largest) || separated(m.a, m.ia, m.b, m.ib, m.self, largest)) return out;
+    int plane_axis = sharing ? -1 : shared_coordinate(m);
+    // Two triangles of one object sharing a vertex are never apart along a direction.
+    if (plane_axis < 0 && !sharing && triangles_apart(m, largest)) return out;
+    if (touching(m, 0, plane_axis >= 0)) {
         out.contact = out.start_contact = true;
         out.toi = 0;
-        out.end_contact = touching(m, 1, planar);
+        out.end_contact = touching(m, 1, plane_axis >= 0);
         return out;
     }
+    if (!sharing && plane_axis < 0) plane_axis = coplanar_motion(m);
+    const bool planar = plane_axis >= 0;
     Bounds face_a, face_b;
     std::array<Bounds, 3> point_a, point_b;
     for (int i = 0; i < 3; ++i) {
