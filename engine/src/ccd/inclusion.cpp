@@ -267,6 +267,20 @@ double coplanarity_error(double largest) {
     return 4096 * largest * largest * largest * 0x1p-53 + 64 * std::numeric_limits<double>::denorm_min();
 }
 
+// The width of time spans handed to the boxes: F moves by at most δ/4 across one (all of
+// [0, 1] for still features).
+double box_width(const Function& f, double tolerance) {
+    const double speed = (f.dx.cwiseAbs() + f.dy.cwiseAbs() + f.dz.cwiseAbs()).maxCoeff();
+    return speed > 0 ? tolerance / (4 * speed) : 1;
+}
+
+// The halvings that take a span wider than `width` down to it: ceil(log2(span / width)), or
+// one more (the cells are then narrower, which is as good); 64 where the ratio overflows.
+int halvings_to(double span, double width) {
+    const double ratio = span / width;
+    return std::isfinite(ratio) ? std::ilogb(ratio) + 1 : 64;
+}
+
 // A polynomial's value at tau in [0, 1] from its Bernstein coefficients (de Casteljau's rule);
 // for a dyadic tau, 1 - tau is exact, and each level of convex combinations (at most three)
 // adds at most 3u times the largest coefficient to the value's error.
@@ -353,8 +367,7 @@ QueryResult solve(const Function& f, bool simplex, const QueryConfig& config) {
     for (const double c : whole) size = std::max(size, std::abs(c));
     if (!std::isfinite(size)) return solve_span(f, simplex, config, 0, 1, result), result;
     const double error = coplanarity_error(f.largest) + 0x1p-44 * size;
-    const double speed = (f.dx.cwiseAbs() + f.dy.cwiseAbs() + f.dz.cwiseAbs()).maxCoeff();
-    const double width = speed > 0 ? config.tolerance / (4 * speed) : 1;
+    const double width = box_width(f, config.tolerance);
     struct Span {
         double a, b;
         std::array<double, 4> c;
@@ -382,8 +395,7 @@ QueryResult solve(const Function& f, bool simplex, const QueryConfig& config) {
         // The halvings down to the width, skipped where the span holds one certain root: its
         // cell's ends are dyadic (the span's are, and its depth plus the levels stays below
         // 53 bits), so they are exact.
-        const double ratio = (s.b - s.a) / width;  // > 1 here: halvings needed, ceil(log2), or one more
-        const int levels = std::isfinite(ratio) ? std::ilogb(ratio) + 1 : 64;
+        const int levels = halvings_to(s.b - s.a, width);
         if (levels >= 3 && s.depth + levels < 50) {
             const double cell = root_cell(s.c, error, levels);
             if (cell >= 0) {
@@ -460,8 +472,7 @@ std::pair<Quadratic, Quadratic> halves(const Quadratic& q) {
 QueryResult solve_in_plane(const Function& f, const std::array<Quadratic, 3>& whole, double error,
                            const QueryConfig& config) {
     QueryResult result;
-    const double speed = (f.dx.cwiseAbs() + f.dy.cwiseAbs() + f.dz.cwiseAbs()).maxCoeff();
-    const double width = speed > 0 ? config.tolerance / (4 * speed) : 1;
+    const double width = box_width(f, config.tolerance);
     struct Span {
         double a, b;
         std::array<Quadratic, 3> g;
@@ -485,8 +496,7 @@ QueryResult solve_in_plane(const Function& f, const std::array<Quadratic, 3>& wh
         // before it the signs conflict, after it all three agree (and so does the area, their
         // sum). Leaving, the vertex is inside at the span's start. Either way one cell of the
         // width halving holds the first contact, as in solve (dyadic ends, exact).
-        const double ratio = (s.b - s.a) / width;
-        const int levels = std::isfinite(ratio) ? std::ilogb(ratio) + 1 : 64;
+        const int levels = halvings_to(s.b - s.a, width);
         if (levels >= 3 && s.depth + levels < 50) {
             int crossing = -1, inner = 0, certain = 0;
             for (int k = 0; k < 3; ++k) {
