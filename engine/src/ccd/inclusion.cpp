@@ -400,6 +400,7 @@ QueryResult solve(const Function& f, bool simplex, const QueryConfig& config) {
             const double cell = root_cell(s.c, error, levels);
             if (cell >= 0) {
                 const double step = std::ldexp(s.b - s.a, -levels);
+                if (s.a + cell * step > config.t_max) break;  // the root, and every later span, too late
                 if (solve_span(f, simplex, config, s.a + cell * step, s.a + (cell + 1) * step, result)) return result;
                 continue;
             }
