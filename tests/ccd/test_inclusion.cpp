@@ -326,6 +326,21 @@ TEST(Inclusion, PlanarVertexFaceHandcrafted) {
     }
 }
 
+// Far from the origin the planar query's bound stays that of the features' size: the unit face
+// 2^18 to 2^24 from the origin, a vertex entering it at t = 1/4, is resolved in a few boxes (a
+// review found the bound, then made of the coordinates, swamping the orientations there).
+TEST(Inclusion, PlanarVertexFaceFarFromTheOrigin) {
+    for (const double offset : {0x1p18, 0x1p20, 0x1p24}) {
+        const Vec3 o(offset, offset, 0);
+        const QueryResult r = vertex_face_in_plane(shifted(moving({-1, 0.25, 0}, {3, 0.25, 0}), o), shifted(k_a, o),
+                                                   shifted(k_b, o), shifted(k_c, o), 2, {1e-5, 1, 50000});
+        EXPECT_TRUE(r.hit && r.resolved) << "offset " << offset;
+        EXPECT_LE(r.toi, 0.25) << "offset " << offset;
+        EXPECT_GE(r.toi, 0.25 - 1e-3) << "offset " << offset;
+        EXPECT_LT(r.boxes, 1000u) << "offset " << offset;
+    }
+}
+
 // Random motions in the three planes, biased toward contact, near misses, flat faces, still
 // features and coordinates far out (seeds printed): wherever the exact test finds the vertex
 // in the face at one of 65 sampled times, the planar query reports contact no later; where the

@@ -76,5 +76,43 @@ TEST(PairMotion, TwoStillPairsWhereProductsUnderflowAreReported) {
     }
 }
 
+// Pairs moving in one plane, where the planar query and its shortcuts decide (cases a review
+// found left unresolved or reported as contacts): a triangle sliding past a face 0.125 beyond
+// its hypotenuse, near the origin and 2^20 and 2^22 from it (the orientations' bound grew with
+// the coordinates and swamped them there), and two flat triangles on one line drawing apart
+// (every orientation zero throughout: each narrow span went to the boxes, until the budget).
+TEST(PairMotion, PairsInOnePlaneResolveNearMissesFarOutAndOnALine) {
+    for (const double offset : {0.0, 0x1p20, 0x1p22}) {
+        const Vec3 o(offset, offset, 0), d(-2, 2, 0), s(1.0625, 0.0625, 0);  // s: x + y = 1.125
+        PairMotion m;
+        m.ia = {0, 1, 2};
+        m.ib = {3, 4, 5};
+        m.b = {Path{o, o}, Path{o + Vec3(1, 0, 0), o + Vec3(1, 0, 0)}, Path{o + Vec3(0, 1, 0), o + Vec3(0, 1, 0)}};
+        m.a = {Path{o + s - d, o + s + d}, Path{o + s - d + Vec3(1, 0, 0), o + s + d + Vec3(1, 0, 0)},
+               Path{o + s - d + Vec3(0, 1, 0), o + s + d + Vec3(0, 1, 0)}};
+        const PairOutcome miss = test_pair(m, 1e-5, 50000);
+        EXPECT_FALSE(miss.contact) << "offset " << offset << ": toi " << miss.toi << ", boxes " << miss.boxes;
+        // The same triangle 0.25 lower: its tip crosses the hypotenuse (x + y = 0.875 < 1).
+        for (Path& path : m.a) path = {path[0] - Vec3(0, 0.25, 0), path[1] - Vec3(0, 0.25, 0)};
+        const PairOutcome hit = test_pair(m, 1e-5, 50000);
+        EXPECT_TRUE(hit.contact && hit.resolved) << "offset " << offset << ": boxes " << hit.boxes;
+    }
+    const auto on_axis = [](double from, double to) { return Path{Vec3(from, 0, 0), Vec3(to, 0, 0)}; };
+    PairMotion line;
+    line.ia = {0, 1, 2};
+    line.ib = {3, 4, 5};
+    line.a = {on_axis(0, 1.5), on_axis(1, 2.5), on_axis(0.5, 2)};
+    line.b = {on_axis(2, 3.75), on_axis(3, 4.75), on_axis(2.5, 4.25)};
+    const PairOutcome apart = test_pair(line, 1e-6, 50000);
+    EXPECT_FALSE(apart.contact) << "toi " << apart.toi << ", boxes " << apart.boxes;
+    // Drawing together instead: they meet when the gap of 1 closes, at t = 1/2.
+    line.b = {on_axis(2, 1), on_axis(3, 2), on_axis(2.5, 1.5)};
+    line.a = {on_axis(0, 1), on_axis(1, 2), on_axis(0.5, 1.5)};
+    const PairOutcome meet = test_pair(line, 1e-6, 50000);
+    EXPECT_TRUE(meet.contact && meet.resolved) << "boxes " << meet.boxes;
+    EXPECT_LE(meet.toi, 0.5);
+    EXPECT_GE(meet.toi, 0.5 - 1e-3);
+}
+
 }  // namespace
 }  // namespace collidescope::ccd

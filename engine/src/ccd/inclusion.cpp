@@ -264,7 +264,9 @@ std::array<Vec3, 4> crosses(const Path& y, const Path& z) {
 // The bound on those coefficients' rounding where X, Y and Z are differences of input
 // coordinates of magnitude at most `largest` (see solve).
 double coplanarity_error(double largest) {
-    return 4096 * largest * largest * largest * 0x1p-53 + 64 * std::numeric_limits<double>::denorm_min();
+    // 256 subnormals: products that underflow, and up to 60 halvings of subnormal coefficients
+    // (each average may round by half a subnormal, which the relative term does not cover there).
+    return 4096 * largest * largest * largest * 0x1p-53 + 256 * std::numeric_limits<double>::denorm_min();
 }
 
 // The width of time spans handed to the boxes: F moves by at most δ/4 across one (all of
@@ -426,19 +428,26 @@ constexpr double k_error_scale = 512 * 0x1p-53;
 // only when none is of the strict sign opposite to the area g_ab + g_bc + g_ca where that is
 // non-zero. Each is a product of two linear functions, (b - a)(t) x (p - a)(t): a quadratic
 // whose Bernstein coefficients on [0, 1] are e0 x w0, (e0 x w1 + e1 x w0) / 2 and e1 x w1 over
-// the ends' differences. With M the largest magnitude of a projected coordinate, each
-// difference (at most 2M) is within 2Mu of exact, each cross product within 33 M^2 u and the
-// middle coefficient within 82 M^2 u; the bound used is 1024 M^2 u, plus 64 subnormals for
-// products that underflow, plus 2^-44 times the largest coefficient for the de Casteljau
-// halvings (as in solve). Spans are halved earliest first and dropped where those signs rule
+// the ends' differences. Each difference is correctly rounded (within u of itself, relative),
+// so with D the largest magnitude of a computed projected difference, each product is within
+// 3 D^2 u of exact, each cross product within 8 D^2 u and the middle coefficient within
+// 20 D^2 u; the bound used is 64 D^2 u (it does not grow with the distance from the origin, as
+// a bound on the coordinates would: at 10^6 times the features' size that one swamped the
+// orientations and the queries ran out of boxes), plus 256 subnormals for products and
+// halvings that underflow, plus 2^-44 times the largest coefficient for the de Casteljau
+// halvings (as in solve). Where all three are within four bounds of zero on a span (the
+// points on one line throughout, or nearly) halving would exclude nothing: the span goes to
+// the boxes at once, as solve does with a flat cubic. Spans are halved earliest first and dropped where those signs rule
 // contact out; a span narrow enough that F moves by at most δ/4 across it goes to the boxes.
 
 using Quadratic = std::array<double, 3>;
 
-Quadratic orientation(const Path& from, const Path& to, const Path& p, int i, int j) {
+// `reach` grows to the largest magnitude of a projected difference used.
+Quadratic orientation(const Path& from, const Path& to, const Path& p, int i, int j, double& reach) {
     const auto cross = [&](const Vec3& e, const Vec3& w) { return e[i] * w[j] - e[j] * w[i]; };
     const Vec3 e0 = to[0] - from[0], e1 = to[1] - from[1];
     const Vec3 w0 = p[0] - from[0], w1 = p[1] - from[1];
+    for (const Vec3* d : {&e0, &e1, &w0, &w1}) reach = std::max({reach, std::abs((*d)[i]), std::abs((*d)[j])});
     return {cross(e0, w0), 0.5 * (cross(e0, w1) + cross(e1, w0)), cross(e1, w1)};
 }
 
@@ -486,8 +495,10 @@ QueryResult solve_in_plane(const Function& f, const std::array<Quadratic, 3>& wh
         const Span s = stack[--waiting];
         if (s.a > config.t_max) break;  // spans are popped in time order: the rest is later
         if (planar_excluded(s.g, error)) continue;
+        bool flat = true;
+        for (const Quadratic& q : s.g) flat = flat && std::abs(q[0]) <= 4 * error && std::abs(q[1]) <= 4 * error && std::abs(q[2]) <= 4 * error;
         const double middle = 0.5 * (s.a + s.b);
-        if (s.b - s.a <= width || s.depth >= 60 || !(s.a < middle && middle < s.b)) {
+        if (flat || s.b - s.a <= width || s.depth >= 60 || !(s.a < middle && middle < s.b)) {
             if (solve_span(f, true, config, s.a, s.b, result)) return result;
             continue;
         }
@@ -555,11 +566,12 @@ QueryResult vertex_face_in_plane(const Path& p, const Path& a, const Path& b, co
     const Vec3 magnitude = largest_magnitude({&p, &a, &b, &c});
     const Function f = make_function(p, a, a, b, a, c, k_error_scale, magnitude);
     const int i = (drop + 1) % 3, j = (drop + 2) % 3;
-    const std::array<Quadratic, 3> g{orientation(a, b, p, i, j), orientation(b, c, p, i, j), orientation(c, a, p, i, j)};
+    double reach = 0;
+    const std::array<Quadratic, 3> g{orientation(a, b, p, i, j, reach), orientation(b, c, p, i, j, reach),
+                                     orientation(c, a, p, i, j, reach)};
     double size = 0;
     for (const Quadratic& q : g) size = std::max({size, std::abs(q[0]), std::abs(q[1]), std::abs(q[2])});
-    const double largest = std::max(magnitude[i], magnitude[j]);
-    const double error = 1024 * largest * largest * 0x1p-53 + 0x1p-44 * size + 64 * std::numeric_limits<double>::denorm_min();
+    const double error = 64 * reach * reach * 0x1p-53 + 0x1p-44 * size + 256 * std::numeric_limits<double>::denorm_min();
     if (!std::isfinite(error)) return solve(f, true, config);
     return solve_in_plane(f, g, error, config);
 }
