@@ -283,6 +283,13 @@ int halvings_to(double span, double width) {
     return std::isfinite(ratio) ? std::ilogb(ratio) + 1 : 64;
 }
 
+// Whether a span goes to the boxes as it is: narrow enough, flat (halving would exclude
+// nothing), as deep as the halvings go, or too narrow to halve in double.
+bool last_halving(double a, double b, int depth, double width, bool flat) {
+    const double middle = 0.5 * (a + b);
+    return flat || b - a <= width || depth >= 60 || !(a < middle && middle < b);
+}
+
 // A polynomial's value at tau in [0, 1] from its Bernstein coefficients (de Casteljau's rule);
 // for a dyadic tau, 1 - tau is exact, and each level of convex combinations (at most three)
 // adds at most 3u times the largest coefficient to the value's error.
@@ -389,8 +396,7 @@ QueryResult solve(const Function& f, bool simplex, const QueryConfig& config) {
         if (s.depth % 4 == 0 && apart(f, s.a, s.b)) continue;
         bool flat = true;
         for (const double c : s.c) flat = flat && std::abs(c) <= 4 * error;
-        const double middle = 0.5 * (s.a + s.b);
-        if (flat || s.b - s.a <= width || s.depth >= 60 || !(s.a < middle && middle < s.b)) {
+        if (last_halving(s.a, s.b, s.depth, width, flat)) {
             if (solve_span(f, simplex, config, s.a, s.b, result)) return result;
             continue;
         }
@@ -407,6 +413,7 @@ QueryResult solve(const Function& f, bool simplex, const QueryConfig& config) {
                 continue;
             }
         }
+        const double middle = 0.5 * (s.a + s.b);
         const double l1 = 0.5 * (s.c[0] + s.c[1]), m = 0.5 * (s.c[1] + s.c[2]), r2 = 0.5 * (s.c[2] + s.c[3]);
         const double l2 = 0.5 * (l1 + m), r1 = 0.5 * (m + r2), mid = 0.5 * (l2 + r1);
         stack[waiting++] = {middle, s.b, {mid, r1, r2, s.c[3]}, s.depth + 1};
@@ -497,8 +504,7 @@ QueryResult solve_in_plane(const Function& f, const std::array<Quadratic, 3>& wh
         if (planar_excluded(s.g, error)) continue;
         bool flat = true;
         for (const Quadratic& q : s.g) flat = flat && std::abs(q[0]) <= 4 * error && std::abs(q[1]) <= 4 * error && std::abs(q[2]) <= 4 * error;
-        const double middle = 0.5 * (s.a + s.b);
-        if (flat || s.b - s.a <= width || s.depth >= 60 || !(s.a < middle && middle < s.b)) {
+        if (last_halving(s.a, s.b, s.depth, width, flat)) {
             if (solve_span(f, true, config, s.a, s.b, result)) return result;
             continue;
         }
@@ -529,6 +535,7 @@ QueryResult solve_in_plane(const Function& f, const std::array<Quadratic, 3>& wh
                 }
             }
         }
+        const double middle = 0.5 * (s.a + s.b);
         Span early{s.a, middle, {}, s.depth + 1}, late{middle, s.b, {}, s.depth + 1};
         for (int k = 0; k < 3; ++k) std::tie(early.g[k], late.g[k]) = halves(s.g[k]);
         stack[waiting++] = late;

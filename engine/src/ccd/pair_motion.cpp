@@ -37,15 +37,7 @@ bool touching(const PairMotion& m, int end, bool planar) {
 
 bool shares(const TriIndices& t, std::uint32_t v) { return t[0] == v || t[1] == v || t[2] == v; }
 
-// When all twelve positions (both triangles at both ends) lie in one plane, decided exactly,
-// an axis the plane's normal has a non-zero component along (else -1): then every position in
-// between lies in the plane too (an affine combination of them), and two triangles in a plane
-// that first touch do so with a vertex of one on the other's border, so the vertex-face
-// queries, in their planar form, find every first contact and the edge-edge ones (whose zero
-// sets, for nearly parallel edges in a plane, are long curves that cost the inclusion search
-// dearly) are not needed. Not for two triangles of one object sharing a vertex: the self rule skips the
-// queries of shared vertices, and such a pair can start to overlap at a shared vertex (one
-// triangle folding through it) where only an edge-edge query sees it.
+// The twelve positions: both triangles at both ends.
 std::array<Vec3, 12> positions(const PairMotion& m) {
     std::array<Vec3, 12> points;
     for (int i = 0; i < 3; ++i) {
@@ -57,8 +49,8 @@ std::array<Vec3, 12> positions(const PairMotion& m) {
     return points;
 }
 
-// The common case of coplanar_motion, cheap enough to ask of every pair: one coordinate shared
-// by all twelve positions (that axis), else -1.
+// The common case of a plane holding the motion (below), cheap enough to ask of every pair: one
+// coordinate shared by all twelve positions (that axis), else -1.
 int shared_coordinate(const PairMotion& m) {
     const auto same = [&](int k) {
         const double value = m.a[0][0][k];
@@ -75,8 +67,16 @@ int shared_coordinate(const PairMotion& m) {
     return -1;
 }
 
+// The general case, asked once shared_coordinate has said no: when all twelve positions (both triangles at both ends) lie in one plane, decided exactly,
+// an axis the plane's normal has a non-zero component along (else -1): then every position in
+// between lies in the plane too (an affine combination of them), and two triangles in a plane
+// that first touch do so with a vertex of one on the other's border, so the vertex-face
+// queries, in their planar form, find every first contact and the edge-edge ones (whose zero
+// sets, for nearly parallel edges in a plane, are long curves that cost the inclusion search
+// dearly) are not needed. Not for two triangles of one object sharing a vertex: the self rule skips the
+// queries of shared vertices, and such a pair can start to overlap at a shared vertex (one
+// triangle folding through it) where only an edge-edge query sees it.
 int coplanar_motion(const PairMotion& m) {
-    if (const int k = shared_coordinate(m); k >= 0) return k;
     const std::array<Vec3, 12> points = positions(m);
     // A plane: the first point and two more that make a non-degenerate triangle with it.
     for (int i = 1; i < 12; ++i) {
