@@ -215,7 +215,7 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
     int plane_axis = sharing ? -1 : shared_coordinate(m);
     // Two triangles of one object sharing a vertex are never apart along a direction.
     // The directions at t = 0 first; those at t = 1 part few more pairs (data set A: 10k of
-    // 246k), so they are asked only of a pair the queries then report without touching at
+    // 236k parted), so they are asked only of a pair the queries then report without touching at
     // either end, the only kind they could part (a grazing pair accepted within δ).
     const bool directions = plane_axis < 0 && !sharing;
     if (directions && triangles_apart(m, largest, 0)) return out;
