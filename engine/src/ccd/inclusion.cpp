@@ -18,6 +18,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <bit>
 #include <cfloat>
 #include <cmath>
 #include <limits>
@@ -276,11 +277,18 @@ double box_width(const Function& f, double tolerance) {
     return speed > 0 ? tolerance / (4 * speed) : 1;
 }
 
+// 2^k, exactly, for |k| < 1000, from its bits (std::ldexp is a library call, and the root
+// cells asked for three of them a query).
+double power_of_two(int k) { return std::bit_cast<double>(static_cast<std::uint64_t>(1023 + k) << 52); }
+
 // The halvings that take a span wider than `width` down to it: ceil(log2(span / width)), or
-// one more (the cells are then narrower, which is as good); 64 where the ratio overflows.
+// one more (the cells are then narrower, which is as good); 64 where the ratio overflows. The
+// exponent is read from the bits where the ratio is normal (std::ilogb is a library call).
 int halvings_to(double span, double width) {
     const double ratio = span / width;
-    return std::isfinite(ratio) ? std::ilogb(ratio) + 1 : 64;
+    if (!std::isfinite(ratio)) return 64;
+    if (!(ratio >= std::numeric_limits<double>::min())) return std::ilogb(ratio) + 1;
+    return static_cast<int>((std::bit_cast<std::uint64_t>(ratio) >> 52) & 0x7FF) - 1023 + 1;
 }
 
 // Whether a span goes to the boxes as it is: narrow enough, flat (halving would exclude
@@ -334,7 +342,7 @@ double root_cell(const std::array<double, N>& c, double error, int levels) {
     if (changes != 1) return -1;
     // From the chord's root, Newton's steps (the derivative from the last level of de
     // Casteljau's rule), until a step moves less than a sixteenth of a cell.
-    const double cells = std::ldexp(1.0, levels), resolution = std::ldexp(1.0, -levels - 4);
+    const double cells = power_of_two(levels), resolution = power_of_two(-levels - 4);
     double tau = c[0] / (c[0] - c[N - 1]);
     for (int step = 0; step < 8 && std::isfinite(tau); ++step) {
         const auto [value, slope] = bernstein_value_and_slope(c, tau);
@@ -407,7 +415,7 @@ QueryResult solve(const Function& f, bool simplex, const QueryConfig& config) {
         if (levels >= 3 && s.depth + levels < 50) {
             const double cell = root_cell(s.c, error, levels);
             if (cell >= 0) {
-                const double step = std::ldexp(s.b - s.a, -levels);
+                const double step = (s.b - s.a) * power_of_two(-levels);
                 if (s.a + cell * step > config.t_max) break;  // the root, and every later span, too late
                 if (solve_span(f, simplex, config, s.a + cell * step, s.a + (cell + 1) * step, result)) return result;
                 continue;
@@ -528,7 +536,7 @@ QueryResult solve_in_plane(const Function& f, const std::array<Quadratic, 3>& wh
                 const double cell = root_cell(q, error, levels);
                 if (cell >= 0) {
                     const bool entering = (q[0] > 0) != (inner > 0);
-                    const double step = std::ldexp(s.b - s.a, -levels);
+                    const double step = (s.b - s.a) * power_of_two(-levels);
                     const double first = entering ? cell : 0;
                     if (solve_span(f, true, config, s.a + first * step, s.a + (first + 1) * step, result)) return result;
                     if (entering) continue;  // only past t_max; leaving, the same (else halved)
