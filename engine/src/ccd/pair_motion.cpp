@@ -2,7 +2,7 @@
 // the other's face and each edge against each edge, every query first through the box of its
 // points at both ends (the motion is linear, so the features stay in the convex hull of
 // their positions at both ends: boxes apart, no contact), and each asked only for contacts
-// before the earliest found so far.
+// before the earliest found so far (and through the boxes up to that time).
 
 #include "ccd/pair_motion.hpp"
 
@@ -18,9 +18,23 @@ namespace {
 struct Bounds {
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
     Vec3 hi = Vec3::Constant(-std::numeric_limits<double>::infinity());
-    void grow(const Path& path) {
-        lo = lo.cwiseMin(path[0]).cwiseMin(path[1]);
-        hi = hi.cwiseMax(path[0]).cwiseMax(path[1]);
+    void grow(const Bounds& b) {
+        lo = lo.cwiseMin(b.lo);
+        hi = hi.cwiseMax(b.hi);
+    }
+    // The positions of a linearly moving point over [0, until]: its box at both ends, and
+    // for until < 1 within that, the box of its start and its rounded position at `until`,
+    // widened by that rounding (fl(p0 + t fl(p1 - p0)) is within about 7u `largest` of exact
+    // for t in [0, 1], `largest` bounding every coordinate's magnitude; 16u largest covers it,
+    // 64 subnormals the products that underflow). Never larger than the whole interval's box,
+    // so a feature pair that box parts stays parted.
+    static Bounds of(const Path& path, double until, double largest) {
+        const Bounds whole{path[0].cwiseMin(path[1]), path[0].cwiseMax(path[1])};
+        if (until >= 1) return whole;
+        const Vec3 at = path[0] + until * (path[1] - path[0]);
+        const double margin = 16 * std::numeric_limits<double>::epsilon() / 2 * largest + 64 * std::numeric_limits<double>::denorm_min();
+        return {whole.lo.cwiseMax(path[0].cwiseMin(at) - Vec3::Constant(margin)),
+                whole.hi.cwiseMin(path[0].cwiseMax(at) + Vec3::Constant(margin))};
     }
     bool overlaps(const Bounds& o) const { return (lo.array() <= o.hi.array()).all() && (o.lo.array() <= hi.array()).all(); }
 };
@@ -227,14 +241,22 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
     }
     if (!sharing && plane_axis < 0) plane_axis = coplanar_motion(m);
     const bool planar = plane_axis >= 0;
+    // The features' boxes over [0, config.t_max]: over the whole interval, then, once a
+    // contact is known, only up to it (only an earlier contact matters then; on data set A
+    // 30% of the queries asked after a contact have features apart until it).
     Bounds face_a, face_b;
     std::array<Bounds, 3> point_a, point_b;
-    for (int i = 0; i < 3; ++i) {
-        face_a.grow(m.a[i]);
-        face_b.grow(m.b[i]);
-        point_a[i].grow(m.a[i]);
-        point_b[i].grow(m.b[i]);
-    }
+    const auto fit_bounds = [&](double until) {
+        face_a = face_b = Bounds{};
+        for (int i = 0; i < 3; ++i) {
+            point_a[i] = Bounds::of(m.a[i], until, largest);
+            point_b[i] = Bounds::of(m.b[i], until, largest);
+            face_a.grow(point_a[i]);
+            face_b.grow(point_b[i]);
+        }
+    };
+    fit_bounds(1);
+    double bounds_until = 1;
     QueryConfig config{tolerance, 1, max_boxes};
     // Once a query has found contact, the others only ask whether there is an earlier one, on
     // a smaller budget: spent, its earliest time not excluded becomes the pair's toi (still a
@@ -250,16 +272,24 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
         config.t_max = out.toi;  // only an earlier contact matters now
         config.max_boxes = std::min(max_boxes, k_after_contact);
     };
+    const auto refit_bounds = [&] {
+        if (config.t_max < bounds_until) {
+            bounds_until = config.t_max;
+            fit_bounds(bounds_until);
+        }
+    };
     const auto vertex_query = [&](const Path& p, const std::array<Path, 3>& face) {
         return planar ? vertex_face_in_plane(p, face[0], face[1], face[2], plane_axis, config)
                                : vertex_face(p, face[0], face[1], face[2], config);
     };
     // Each vertex of one against the other's face (not a vertex of that face, for self).
     for (int i = 0; i < 3; ++i) {
+        refit_bounds();
         if (!(m.self && shares(m.ib, m.ia[i])) && point_a[i].overlaps(face_b) &&
             (planar || !vertex_clear_of_face(m.a[i], m.b, largest))) {
             record(vertex_query(m.a[i], m.b));
         }
+        refit_bounds();
         if (!(m.self && shares(m.ia, m.ib[i])) && point_b[i].overlaps(face_a) &&
             (planar || !vertex_clear_of_face(m.b[i], m.a, largest))) {
             record(vertex_query(m.b[i], m.a));
@@ -268,13 +298,15 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
     // Each edge against each edge (not sharing a vertex, for self), unless in one plane.
     for (int i = 0; i < 3 && !planar; ++i) {
         const int i1 = (i + 1) % 3;
-        Bounds edge_a = point_a[i];
-        edge_a.grow(m.a[i1]);
+        Bounds edge_a;
         for (int j = 0; j < 3; ++j) {
             const int j1 = (j + 1) % 3;
             if (m.self && (m.ia[i] == m.ib[j] || m.ia[i] == m.ib[j1] || m.ia[i1] == m.ib[j] || m.ia[i1] == m.ib[j1])) continue;
+            refit_bounds();
+            edge_a = point_a[i];
+            edge_a.grow(point_a[i1]);
             Bounds edge_b = point_b[j];
-            edge_b.grow(m.b[j1]);
+            edge_b.grow(point_b[j1]);
             if (edge_a.overlaps(edge_b) && !edges_clear(m.a[i], m.a[i1], m.b[j], m.b[j1], largest)) {
                 record(edge_edge(m.a[i], m.a[i1], m.b[j], m.b[j1], config));
             }
