@@ -2,7 +2,7 @@
 """Between-frames detection against the CCD peer (issue 39 point 4), each side in its own process.
 
 Usage: bench/scripts/ccd_peers.py SCENE[:PRESET][@FRAMES] ... [--runs 3] [--threads 2]
-           [--self SCENE,...] [--bin build-peer/bench/bench_ccd_peers] [--out RUNS.jsonl]
+           [--self SCENE,...] [--bin build/bench/bench_ccd_peers] [--out RUNS.jsonl]
            [--pairs-dir DIR]
 
 For each scene, --runs rounds run `bench_ccd_peers --method ours` and `--method peer` once each,
@@ -28,7 +28,9 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-BIN = os.path.join(ROOT, "build-peer", "bench", "bench_ccd_peers")
+# The project's build (bench_ccd_peers is built where Embree 3 is installed), else a separate
+# build-peer/.
+BINS = [os.path.join(ROOT, build, "bench", "bench_ccd_peers") for build in ("build", "build-peer")]
 
 
 def scene_args(spec, forced_self):
@@ -98,10 +100,13 @@ def main():
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--self", default="", help="comma-separated scenes to run with --self")
-    parser.add_argument("--bin", default=BIN)
+    parser.add_argument("--bin", default=next((b for b in BINS if os.path.exists(b)), BINS[0]))
     parser.add_argument("--out")
     parser.add_argument("--pairs-dir")
     args = parser.parse_args()
+    if not os.access(args.bin, os.X_OK):
+        sys.exit("ccd_peers.py: %s not found: build it with `cmake --build build --target bench_ccd_peers` "
+                 "(it needs Embree 3, libembree-dev) or give --bin" % args.bin)
     forced_self = set(filter(None, args.self.split(",")))
     pairs_dir = args.pairs_dir or tempfile.mkdtemp(prefix="ccd_peers.")
     rows = []
