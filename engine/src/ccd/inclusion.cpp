@@ -283,11 +283,11 @@ double power_of_two(int k) { return std::bit_cast<double>(static_cast<std::uint6
 
 // The halvings that take a span wider than `width` down to it: ceil(log2(span / width)), or
 // one more (the cells are then narrower, which is as good); 64 where the ratio overflows. The
-// exponent is read from the bits where the ratio is normal (std::ilogb is a library call).
+// ratio exceeds 1 (the callers ask only once last_halving has said no), so it is normal and its
+// exponent is read from its bits (std::ilogb is a library call).
 int halvings_to(double span, double width) {
     const double ratio = span / width;
     if (!std::isfinite(ratio)) return 64;
-    if (!(ratio >= std::numeric_limits<double>::min())) return std::ilogb(ratio) + 1;
     return static_cast<int>((std::bit_cast<std::uint64_t>(ratio) >> 52) & 0x7FF) - 1023 + 1;
 }
 

@@ -81,8 +81,9 @@ int shared_coordinate(const PairMotion& m) {
     return -1;
 }
 
-// The general case, asked once shared_coordinate has said no: when all twelve positions (both triangles at both ends) lie in one plane, decided exactly,
-// an axis the plane's normal has a non-zero component along (else -1): then every position in
+// The general case, asked once shared_coordinate has said no: when all twelve positions (both
+// triangles at both ends) lie in one plane, decided exactly, an axis the plane's normal has a
+// non-zero component along (else -1): then every position in
 // between lies in the plane too (an affine combination of them), and two triangles in a plane
 // that first touch do so with a vertex of one on the other's border, so the vertex-face
 // queries, in their planar form, find every first contact and the edge-edge ones (whose zero
@@ -227,10 +228,10 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
     // nearly coplanar, its exact orientations are costly).
     if (separated(m.b, m.ib, m.a, m.ia, m.self, largest) || separated(m.a, m.ia, m.b, m.ib, m.self, largest)) return out;
     int plane_axis = sharing ? -1 : shared_coordinate(m);
-    // Two triangles of one object sharing a vertex are never apart along a direction.
-    // The directions at t = 0 first; those at t = 1 part few more pairs (data set A: 10k of
-    // 236k parted), so they are asked only of a pair the queries then report without touching at
-    // either end, the only kind they could part (a grazing pair accepted within δ).
+    // The fixed directions (not for two triangles of one object sharing a vertex: those are
+    // never apart along one) at t = 0 first; those at t = 1 part few more pairs (data set A:
+    // 10k of 236k parted), so they are asked only of a pair the queries then report without
+    // touching at either end, the only kind they could part (a grazing pair accepted within δ).
     const bool directions = plane_axis < 0 && !sharing;
     if (directions && triangles_apart(m, largest, 0)) return out;
     if (touching(m, 0, plane_axis >= 0)) {
