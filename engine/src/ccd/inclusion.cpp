@@ -555,19 +555,25 @@ QueryResult solve_in_plane(const Function& f, const std::array<Quadratic, 3>& wh
 }  // namespace
 
 MovingPlane::MovingPlane(const Path& a, const Path& b, const Path& c, double largest)
-    : m_origin(a),
-      m_crosses(crosses({b[0] - a[0], b[1] - a[1]}, {c[0] - a[0], c[1] - a[1]})),
+    : m_origin(a), m_y{b[0] - a[0], b[1] - a[1]}, m_z{c[0] - a[0], c[1] - a[1]},
+      m_crosses{m_y[0].cross(m_z[0]), Vec3::Zero(), Vec3::Zero(), m_y[1].cross(m_z[1])},
       m_error(coplanarity_error(largest)) {}
 
-int MovingPlane::side(const Path& p) const {
-    const std::array<double, 4> coefficients = coplanarity({p[0] - m_origin[0], p[1] - m_origin[1]}, m_crosses);
-    const auto beyond = [&](double sign) {
-        for (const double k : coefficients) {
-            if (!(sign * k > m_error)) return false;
-        }
-        return true;
-    };
-    return beyond(1) ? 1 : beyond(-1) ? -1 : 0;
+int MovingPlane::side(const Path& p) {
+    // coplanarity's coefficients, term for term (the same values): the ends', then the inner.
+    const Vec3 x0 = p[0] - m_origin[0], x1 = p[1] - m_origin[1];
+    const double first = x0.dot(m_crosses[0]);
+    const int sign = first > m_error ? 1 : first < -m_error ? -1 : 0;
+    if (sign == 0 || !(sign * x1.dot(m_crosses[3]) > m_error)) return 0;
+    if (!m_mixed) {
+        m_crosses[1] = m_y[0].cross(m_z[1]);
+        m_crosses[2] = m_y[1].cross(m_z[0]);
+        m_mixed = true;
+    }
+    const double second = (x1.dot(m_crosses[0]) + x0.dot(m_crosses[2]) + x0.dot(m_crosses[1])) / 3;
+    if (!(sign * second > m_error)) return 0;
+    const double third = (x0.dot(m_crosses[3]) + x1.dot(m_crosses[1]) + x1.dot(m_crosses[2])) / 3;
+    return sign * third > m_error ? sign : 0;
 }
 
 QueryResult vertex_face(const Path& p, const Path& a, const Path& b, const Path& c, const QueryConfig& config) {

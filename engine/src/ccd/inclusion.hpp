@@ -45,12 +45,16 @@ public:
 
     /// 1 or -1 when the signed volume det(p - a, b - a, c - a) is certainly of that sign at
     /// every time of the interval (decided from the Bernstein coefficients of that cubic,
-    /// beyond their rounding bound), 0 when it may vanish.
-    int side(const Path& p) const;
+    /// beyond their rounding bound), 0 when it may vanish. The end coefficients first: the
+    /// inner two, and the cross products they need, only for a point certainly on one side at
+    /// both ends (most points that reach a plane cross it).
+    int side(const Path& p);
 
 private:
     Path m_origin;
-    std::array<Vec3, 4> m_crosses;  ///< (b - a) x (c - a) over both ends' combinations
+    Path m_y, m_z;                  ///< b - a and c - a at both ends
+    std::array<Vec3, 4> m_crosses;  ///< y[j] x z[k] at 2j + k; the mixed ones (1, 2) made once needed
+    bool m_mixed = false;
     double m_error;
 };
 

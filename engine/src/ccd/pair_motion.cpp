@@ -117,7 +117,7 @@ int coplanar_motion(const PairMotion& m) {
 // to a line at some time has no side there: its signed volumes vanish, and nothing is skipped.
 bool separated(const std::array<Path, 3>& points, const TriIndices& point_ids, const std::array<Path, 3>& face,
                const TriIndices& face_ids, bool self, double largest) {
-    const MovingPlane plane(face[0], face[1], face[2], largest);
+    MovingPlane plane(face[0], face[1], face[2], largest);
     int side = 0;
     for (int i = 0; i < 3; ++i) {
         if (self && shares(face_ids, point_ids[i])) continue;

@@ -74,13 +74,15 @@ bool segments_intersect(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3&
 
 bool segment_intersects_triangle(const Vec3& p, const Vec3& q, int op, int oq, const Vec3& a,
                                  const Vec3& b, const Vec3& c) {
-    const int drop = projection_axis(a, b, c);
-    if (drop < 0)  // the triangle is the segment (or point) its edges cover
-        return segments_intersect(p, q, a, b) || segments_intersect(p, q, b, c) ||
-               segments_intersect(p, q, c, a);
     if (op * oq > 0) return false;  // both ends strictly on one side of the plane
-    if (op == 0 && oq == 0)
+    // A non-zero side needs a non-degenerate triangle: the projection is asked only when both
+    // are zero.
+    if (op == 0 && oq == 0) {
+        const int drop = projection_axis(a, b, c);
+        if (drop < 0)  // the triangle is the segment (or point) its edges cover
+            return segments_intersect(p, q, a, b) || segments_intersect(p, q, b, c) || segments_intersect(p, q, c, a);
         return coplanar_segment_triangle(p, q, a, b, c, orient2d(a, b, c, drop), drop);
+    }
     // The segment meets the plane in one point (p != q here: equal ends would give op == oq,
     // handled above). The line pq passes through the closed triangle iff it sees the three
     // edges with one orientation (zeros allowed: the line meets an edge or a corner).
