@@ -252,10 +252,21 @@ bool solve_span(const Function& f, bool simplex, const QueryConfig& config, doub
 // The determinant of X(t), Y(t) and Z(t) (each given at t = 0 and t = 1), a cubic in t: its
 // four Bernstein coefficients on [0, 1], averages of determinants of the end vectors.
 // `cross` holds y[j] x z[k] at index 2j + k (shared by every x against one pair y, z).
-std::array<double, 4> coplanarity(const Path& x, const std::array<Vec3, 4>& cross) {
+// Coefficient n on its own (the end ones, 0 and 3, need only cross[0] and cross[3]).
+double coplanarity_at(const Path& x, const std::array<Vec3, 4>& cross, int n) {
     const auto det = [&](int i, int j, int k) { return x[i].dot(cross[2 * j + k]); };
-    return {det(0, 0, 0), (det(1, 0, 0) + det(0, 1, 0) + det(0, 0, 1)) / 3, (det(0, 1, 1) + det(1, 0, 1) + det(1, 1, 0)) / 3,
-            det(1, 1, 1)};
+    switch (n) {
+        case 0: return det(0, 0, 0);
+        case 1: return (det(1, 0, 0) + det(0, 1, 0) + det(0, 0, 1)) / 3;
+        case 2: return (det(0, 1, 1) + det(1, 0, 1) + det(1, 1, 0)) / 3;
+        default: return det(1, 1, 1);
+    }
+}
+
+// All four.
+std::array<double, 4> coplanarity(const Path& x, const std::array<Vec3, 4>& cross) {
+    return {coplanarity_at(x, cross, 0), coplanarity_at(x, cross, 1), coplanarity_at(x, cross, 2),
+            coplanarity_at(x, cross, 3)};
 }
 
 std::array<Vec3, 4> crosses(const Path& y, const Path& z) {
@@ -560,20 +571,18 @@ MovingPlane::MovingPlane(const Path& a, const Path& b, const Path& c, double lar
       m_error(coplanarity_error(largest)) {}
 
 int MovingPlane::side(const Path& p) {
-    // coplanarity's coefficients, term for term (the same values): the ends', then the inner.
-    const Vec3 x0 = p[0] - m_origin[0], x1 = p[1] - m_origin[1];
-    const double first = x0.dot(m_crosses[0]);
+    // coplanarity's coefficients: the ends', then the inner.
+    const Path x{p[0] - m_origin[0], p[1] - m_origin[1]};
+    const double first = coplanarity_at(x, m_crosses, 0);
     const int sign = first > m_error ? 1 : first < -m_error ? -1 : 0;
-    if (sign == 0 || !(sign * x1.dot(m_crosses[3]) > m_error)) return 0;
+    if (sign == 0 || !(sign * coplanarity_at(x, m_crosses, 3) > m_error)) return 0;
     if (!m_mixed) {
         m_crosses[1] = m_y[0].cross(m_z[1]);
         m_crosses[2] = m_y[1].cross(m_z[0]);
         m_mixed = true;
     }
-    const double second = (x1.dot(m_crosses[0]) + x0.dot(m_crosses[2]) + x0.dot(m_crosses[1])) / 3;
-    if (!(sign * second > m_error)) return 0;
-    const double third = (x0.dot(m_crosses[3]) + x1.dot(m_crosses[1]) + x1.dot(m_crosses[2])) / 3;
-    return sign * third > m_error ? sign : 0;
+    const bool inner = sign * coplanarity_at(x, m_crosses, 1) > m_error && sign * coplanarity_at(x, m_crosses, 2) > m_error;
+    return inner ? sign : 0;
 }
 
 QueryResult vertex_face(const Path& p, const Path& a, const Path& b, const Path& c, const QueryConfig& config) {

@@ -80,7 +80,8 @@ bool segment_intersects_triangle(const Vec3& p, const Vec3& q, int op, int oq, c
     if (op == 0 && oq == 0) {
         const int drop = projection_axis(a, b, c);
         if (drop < 0)  // the triangle is the segment (or point) its edges cover
-            return segments_intersect(p, q, a, b) || segments_intersect(p, q, b, c) || segments_intersect(p, q, c, a);
+            return segments_intersect(p, q, a, b) || segments_intersect(p, q, b, c) ||
+                   segments_intersect(p, q, c, a);
         return coplanar_segment_triangle(p, q, a, b, c, orient2d(a, b, c, drop), drop);
     }
     // The segment meets the plane in one point (p != q here: equal ends would give op == oq,
