@@ -108,13 +108,24 @@ bool witness(const Function& f, bool simplex, const Box& box, double tolerance) 
     const double yy = y.dot(y), yz = y.dot(z), zz = z.dot(z), xy = x.dot(y), xz = x.dot(z);
     const double det = yy * zz - yz * yz;
     double u = 0.5 * (box.u0 + box.u1), v = 0.5 * (box.v0 + box.v1);
-    if (det > 0 && std::isfinite(det)) {
+    if (det > 0x1p-20 * (yy * zz) && std::isfinite(det)) {
         u = (yz * xz - zz * xy) / det;
         v = (yz * xy - yy * xz) / det;
+        if (!std::isfinite(u) || !std::isfinite(v)) return false;
+        u = std::clamp(u, box.u0, box.u1);
+        v = std::clamp(v, box.v0, box.v1);
+    } else {
+        // Y and Z parallel, or within a thousandth of a radian: the least-squares zero is
+        // ill-conditioned (the zeros, where there are any, lie along a line of (u, v)), and
+        // clamping it lands on a corner far from them. Instead each parameter in turn is the
+        // clamped least-squares one given the other, from the middle: for parallel edges two
+        // rounds reach the nearest points of their parts in the box.
+        for (int round = 0; round < 2; ++round) {
+            if (zz > 0) v = std::clamp(-(xz + u * yz) / zz, box.v0, box.v1);
+            if (yy > 0) u = std::clamp(-(xy + v * yz) / yy, box.u0, box.u1);
+        }
+        if (!std::isfinite(u) || !std::isfinite(v)) return false;
     }
-    if (!std::isfinite(u) || !std::isfinite(v)) return false;
-    u = std::clamp(u, box.u0, box.u1);
-    v = std::clamp(v, box.v0, box.v1);
     if (simplex && !(u + v < 1)) {
         const double scale = (1 - 0x1p-40) / (u + v);
         u = std::max(box.u0, u * scale);
@@ -374,7 +385,11 @@ double root_cell(const std::array<double, N>& c, double error, int levels) {
     return cell;
 }
 
-// The solver. `simplex`: the domain is u + v <= 1 (vertex-face), else the unit square.
+/// The four paths of an edge-edge query (p0, p1, q0, q1), for solve's flat case.
+using Edges = std::array<const Path*, 4>;
+
+// The solver. `simplex`: the domain is u + v <= 1 (vertex-face), else the unit square. `edges`:
+// an edge-edge query's paths, searched by solve_flat_edges where the cubic is flat throughout.
 //
 // First the times: F = 0 needs X(t), Y(t) and Z(t) linearly dependent (X = -uY - vZ), so
 // their determinant D(t), a cubic, must vanish. Its Bernstein coefficients on [0, 1] are
@@ -388,13 +403,16 @@ double root_cell(const std::array<double, N>& c, double error, int levels) {
 // at most δ/4 across it (so at its start a contact within it is within δ/4: a witness finds
 // it at once), or once D is flat on it (every coefficient within four bounds of 0: moving in
 // one plane, or nearly; halving it further would not exclude anything).
-QueryResult solve(const Function& f, bool simplex, const QueryConfig& config) {
+QueryResult solve_flat_edges(const Function& f, const Edges& edges, const QueryConfig& config);
+
+QueryResult solve(const Function& f, bool simplex, const QueryConfig& config, const Edges* edges) {
     QueryResult result;
     const std::array<double, 4> whole = coplanarity({f.x0, f.x1}, crosses({f.y0, f.y1}, {f.z0, f.z1}));
     double size = 0;
     for (const double c : whole) size = std::max(size, std::abs(c));
     if (!std::isfinite(size)) return solve_span(f, simplex, config, 0, 1, result), result;
     const double error = coplanarity_error(f.largest) + 0x1p-44 * size;
+    if (edges && size <= 4 * error) return solve_flat_edges(f, *edges, config);
     const double width = box_width(f, config.tolerance);
     struct Span {
         double a, b;
@@ -563,6 +581,81 @@ QueryResult solve_in_plane(const Function& f, const std::array<Quadratic, 3>& wh
     return result;
 }
 
+// ---- Edges on a flat cubic --------------------------------------------------------------
+//
+// Where the coplanarity cubic is flat over the whole interval (every coefficient within four
+// bounds of 0: the edges move in one plane, or stay parallel, or nearly), solve cannot take
+// the times from it, and the boxes alone would search (t, u, v) along a set of near-zeros as
+// long as the edges: sliding parallel edges a gap apart, or passing through each other's line,
+// ran a query out of boxes (contact-rods: the rings of neighbouring tubes, in one horizontal
+// plane). A contact puts a point of each edge on the other's line: with e = p1 - p0,
+// e x (q(v) - p0) = 0 for some v in [0, 1], affine in v, so on no axis k are the components
+// e x (q0 - p0) and e x (q1 - p0) of one strict sign; likewise with the edges exchanged. Each
+// component is an orientation quadratic of the planar query (its projection dropping axis k),
+// under the same rounding bound. Spans are halved earliest first and dropped where some axis
+// puts both ends of one edge strictly on one side of the other's line (for edges in one plane,
+// the test of two segments crossing); a span that is narrow enough, or flat on every side
+// (collinear edges, or nearly), goes to the boxes, as in solve.
+
+// [3 * line + axis][end]: line 0 is p's (ends q0, q1), line 1 is q's (ends p0, p1).
+using LineSides = std::array<std::array<Quadratic, 2>, 6>;
+
+bool sides_exclude(const LineSides& g, double error) {
+    for (const auto& ends : g) {
+        const int sign = certain_sign(ends[0], error);
+        if (sign != 0 && sign == certain_sign(ends[1], error)) return true;
+    }
+    return false;
+}
+
+QueryResult solve_flat_edges(const Function& f, const Edges& edges, const QueryConfig& config) {
+    const auto& [p0, p1, q0, q1] = edges;
+    LineSides whole;
+    double reach = 0;
+    for (int k = 0; k < 3; ++k) {
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        whole[k] = {orientation(*p0, *p1, *q0, i, j, reach), orientation(*p0, *p1, *q1, i, j, reach)};
+        whole[3 + k] = {orientation(*q0, *q1, *p0, i, j, reach), orientation(*q0, *q1, *p1, i, j, reach)};
+    }
+    double size = 0;
+    for (const auto& ends : whole) {
+        for (const Quadratic& q : ends) size = std::max({size, std::abs(q[0]), std::abs(q[1]), std::abs(q[2])});
+    }
+    QueryResult result;
+    const double error = 64 * reach * reach * 0x1p-53 + 0x1p-44 * size + 256 * std::numeric_limits<double>::denorm_min();
+    if (!std::isfinite(error)) return solve_span(f, false, config, 0, 1, result), result;
+    const double width = box_width(f, config.tolerance);
+    struct Span {
+        double a, b;
+        LineSides g;
+        int depth;
+    };
+    std::array<Span, 64> stack;  // at most 61 wait, as in solve
+    int waiting = 0;
+    stack[waiting++] = {0, 1, whole, 0};
+    while (waiting > 0) {
+        const Span s = stack[--waiting];
+        if (s.a > config.t_max) break;  // spans are popped in time order: the rest is later
+        if (sides_exclude(s.g, error)) continue;
+        bool flat = true;
+        for (const auto& ends : s.g) {
+            for (const Quadratic& q : ends) flat = flat && std::abs(q[0]) <= 4 * error && std::abs(q[1]) <= 4 * error && std::abs(q[2]) <= 4 * error;
+        }
+        if (last_halving(s.a, s.b, s.depth, width, flat)) {
+            if (solve_span(f, false, config, s.a, s.b, result)) return result;
+            continue;
+        }
+        const double middle = 0.5 * (s.a + s.b);
+        Span early{s.a, middle, {}, s.depth + 1}, late{middle, s.b, {}, s.depth + 1};
+        for (std::size_t k = 0; k < s.g.size(); ++k) {
+            for (int end = 0; end < 2; ++end) std::tie(early.g[k][end], late.g[k][end]) = halves(s.g[k][end]);
+        }
+        stack[waiting++] = late;
+        stack[waiting++] = early;
+    }
+    return result;
+}
+
 }  // namespace
 
 MovingPlane::MovingPlane(const Path& a, const Path& b, const Path& c, double largest)
@@ -588,7 +681,7 @@ int MovingPlane::side(const Path& p) {
 QueryResult vertex_face(const Path& p, const Path& a, const Path& b, const Path& c, const QueryConfig& config) {
     // F = (p - a) + u (a - b) + v (a - c).
     const Vec3 magnitude = largest_magnitude({&p, &a, &b, &c});
-    return solve(make_function(p, a, a, b, a, c, k_error_scale, magnitude), true, config);
+    return solve(make_function(p, a, a, b, a, c, k_error_scale, magnitude), true, config, nullptr);
 }
 
 QueryResult vertex_face_in_plane(const Path& p, const Path& a, const Path& b, const Path& c, int drop,
@@ -602,14 +695,15 @@ QueryResult vertex_face_in_plane(const Path& p, const Path& a, const Path& b, co
     double size = 0;
     for (const Quadratic& q : g) size = std::max({size, std::abs(q[0]), std::abs(q[1]), std::abs(q[2])});
     const double error = 64 * reach * reach * 0x1p-53 + 0x1p-44 * size + 256 * std::numeric_limits<double>::denorm_min();
-    if (!std::isfinite(error)) return solve(f, true, config);
+    if (!std::isfinite(error)) return solve(f, true, config, nullptr);
     return solve_in_plane(f, g, error, config);
 }
 
 QueryResult edge_edge(const Path& p0, const Path& p1, const Path& q0, const Path& q1, const QueryConfig& config) {
     // F = (p0 - q0) + u (p1 - p0) + v (q0 - q1).
     const Vec3 magnitude = largest_magnitude({&p0, &p1, &q0, &q1});
-    return solve(make_function(p0, q0, p1, p0, q0, q1, k_error_scale, magnitude), false, config);
+    const Edges edges{&p0, &p1, &q0, &q1};
+    return solve(make_function(p0, q0, p1, p0, q0, q1, k_error_scale, magnitude), false, config, &edges);
 }
 
 }  // namespace collidescope::ccd
