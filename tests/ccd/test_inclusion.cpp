@@ -164,44 +164,51 @@ Vec3 random_point(std::mt19937_64& rng, double scale) {
 
 // Random queries built around a contact: at a random time, the vertex (or the first edge's
 // point) is put on the face (or the second edge's point) plus an offset of 0 (touching, up to
-// rounding), a small one (a near miss or a graze) or a large one.
-TEST(Inclusion, FastAgreesWithTheReferenceOnRandomQueries) {
-    for (const std::uint64_t seed : testing::sweep_of<std::uint64_t>({1, 2, 3}, 3)) {
-        std::printf("[ seed     ] Inclusion random queries: seed %llu\n", static_cast<unsigned long long>(seed));
-        std::mt19937_64 rng(seed);
-        std::uniform_real_distribution<double> unit(0, 1);
-        int hits = 0, misses = 0, unchecked = 0;
-        for (int q = 0; q < 120; ++q) {
-            const bool vertex_face_query = q % 2 == 0;
-            std::array<Path, 4> x;
-            for (Path& p : x) p = {random_point(rng, 1), random_point(rng, 1)};
-            if (q % 7 == 3) x[2][1] = x[2][0];  // still features now and then
-            if (q % 11 == 5) x[1] = {x[3][0] + Vec3(1e-3, 0, 0), x[3][1] + Vec3(1e-3, 0, 0)};  // near-degenerate
-            const double t = unit(rng), u = unit(rng), v = unit(rng) * (vertex_face_query ? 1 - u : 1);
-            const auto at = [&](const Path& p) -> Vec3 { return p[0] + t * (p[1] - p[0]); };
-            Vec3 target = at(x[2]) + v * (at(x[3]) - at(x[2])) - u * (at(x[1]) - at(x[0]));
-            if (vertex_face_query) target = at(x[1]) + u * (at(x[2]) - at(x[1])) + v * (at(x[3]) - at(x[1]));
-            const double offsets[] = {0, 1e-4, 1e-2, 0.3};
-            const Vec3 offset = random_point(rng, 1).normalized() * offsets[q % 4];
-            // Move x[0]'s end so that it passes through target + offset at time t.
-            x[0][1] = x[0][0] + (target + offset - x[0][0]) / std::max(t, 1e-3);
-            const QueryConfig config{k_delta, 1, 200000};
-            const QueryResult fast = vertex_face_query ? vertex_face(x[0], x[1], x[2], x[3], config)
-                                                       : edge_edge(x[0], x[1], x[2], x[3], config);
-            // No false negative: where the reference (certain exclusions, a far finer tolerance)
-            // finds the features within 1e-9, the fast query reports contact no later.
-            const QueryConfig fine{1e-9, 1, 100000};
-            const QueryResult slow = vertex_face_query ? reference::vertex_face(x[0], x[1], x[2], x[3], fine)
-                                                       : reference::edge_edge(x[0], x[1], x[2], x[3], fine);
-            const std::string what = "seed " + std::to_string(seed) + " query " + std::to_string(q);
-            unchecked += !agrees_with_reference(vertex_face_query, x, fast, slow, k_delta, what);
-            (fast.hit ? hits : misses) += 1;
-        }
-        // Both answers occur often (the generator is what it says).
-        EXPECT_GT(hits, 25) << "seed " << seed;
-        EXPECT_GT(misses, 25) << "seed " << seed;
-        EXPECT_LE(unchecked, 6) << "seed " << seed;
+// rounding), a small one (a near miss or a graze) or a large one. Features of size `scale`
+// around `center` (small features far from the origin: the cubic's rounding bound is one of
+// the features' differences, not of the coordinates), the tolerance and offsets in proportion.
+void random_queries_agree(std::uint64_t seed, double scale, const Vec3& center) {
+    std::printf("[ seed     ] Inclusion random queries: seed %llu, scale %g\n", static_cast<unsigned long long>(seed), scale);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const double delta = k_delta * scale;
+    int hits = 0, misses = 0, unchecked = 0;
+    for (int q = 0; q < 120; ++q) {
+        const bool vertex_face_query = q % 2 == 0;
+        std::array<Path, 4> x;
+        for (Path& p : x) p = {center + random_point(rng, scale), center + random_point(rng, scale)};
+        if (q % 7 == 3) x[2][1] = x[2][0];  // still features now and then
+        if (q % 11 == 5) x[1] = {x[3][0] + Vec3(1e-3 * scale, 0, 0), x[3][1] + Vec3(1e-3 * scale, 0, 0)};  // near-degenerate
+        const double t = unit(rng), u = unit(rng), v = unit(rng) * (vertex_face_query ? 1 - u : 1);
+        const auto at = [&](const Path& p) -> Vec3 { return p[0] + t * (p[1] - p[0]); };
+        Vec3 target = at(x[2]) + v * (at(x[3]) - at(x[2])) - u * (at(x[1]) - at(x[0]));
+        if (vertex_face_query) target = at(x[1]) + u * (at(x[2]) - at(x[1])) + v * (at(x[3]) - at(x[1]));
+        const double offsets[] = {0, 1e-4, 1e-2, 0.3};
+        const Vec3 offset = random_point(rng, 1).normalized() * offsets[q % 4] * scale;
+        // Move x[0]'s end so that it passes through target + offset at time t.
+        x[0][1] = x[0][0] + (target + offset - x[0][0]) / std::max(t, 1e-3);
+        const QueryConfig config{delta, 1, 200000};
+        const QueryResult fast = vertex_face_query ? vertex_face(x[0], x[1], x[2], x[3], config)
+                                                   : edge_edge(x[0], x[1], x[2], x[3], config);
+        // No false negative: where the reference (certain exclusions, a far finer tolerance)
+        // finds the features within 1e-9 of the scale, the fast query reports contact no later.
+        const QueryConfig fine{1e-9 * scale, 1, 100000};
+        const QueryResult slow = vertex_face_query ? reference::vertex_face(x[0], x[1], x[2], x[3], fine)
+                                                   : reference::edge_edge(x[0], x[1], x[2], x[3], fine);
+        const std::string what = "seed " + std::to_string(seed) + " scale " + std::to_string(scale) + " query " + std::to_string(q);
+        unchecked += !agrees_with_reference(vertex_face_query, x, fast, slow, delta, what);
+        (fast.hit ? hits : misses) += 1;
     }
+    // Both answers occur often (the generator is what it says).
+    EXPECT_GT(hits, 25) << "seed " << seed;
+    EXPECT_GT(misses, 25) << "seed " << seed;
+    EXPECT_LE(unchecked, 6) << "seed " << seed;
+}
+
+TEST(Inclusion, FastAgreesWithTheReferenceOnRandomQueries) {
+    for (const std::uint64_t seed : testing::sweep_of<std::uint64_t>({1, 2, 3}, 3)) random_queries_agree(seed, 1, Vec3::Zero());
+    // Features of 0.01 near coordinates of 1.
+    for (const std::uint64_t seed : testing::sweep_of<std::uint64_t>({4, 5}, 2)) random_queries_agree(seed, 0.01, Vec3(0.7, -0.4, 0.9));
 }
 
 // The signed volume det(p - a, b - a, c - a) at time t, exactly: the positions interpolated

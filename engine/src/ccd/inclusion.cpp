@@ -35,6 +35,7 @@ struct Function {
     Vec3 x1, y1, z1;  ///< X, Y and Z at t = 1, as differences of the inputs (the coplanarity cubic's)
     Vec3 error;       ///< per axis: the bound on a value's rounding error, for t, u, v in [0, 1]
     double largest = 0;  ///< the largest input coordinate's magnitude, every axis
+    double reach = 0;    ///< the largest magnitude of a coordinate of x0, x1, y0, y1, z0, z1
 };
 
 Function make_function(const Path& x_from, const Path& x_to, const Path& y_from, const Path& y_to, const Path& z_from,
@@ -55,6 +56,7 @@ Function make_function(const Path& x_from, const Path& x_to, const Path& y_from,
     f.z1 = z1;
     f.error = magnitude * magnitude_scale + Vec3::Constant(64 * std::numeric_limits<double>::denorm_min());
     f.largest = magnitude.maxCoeff();
+    for (const Vec3* d : {&x0, &x1, &y0, &y1, &z0, &z1}) f.reach = std::max(f.reach, d->cwiseAbs().maxCoeff());
     return f;
 }
 
@@ -284,8 +286,9 @@ std::array<Vec3, 4> crosses(const Path& y, const Path& z) {
     return {y[0].cross(z[0]), y[0].cross(z[1]), y[1].cross(z[0]), y[1].cross(z[1])};
 }
 
-// The bound on those coefficients' rounding where X, Y and Z are differences of input
-// coordinates of magnitude at most `largest` (see solve).
+// The bound on those coefficients' rounding where X, Y and Z are correctly rounded differences
+// of input coordinates whose own coordinates are at most `largest` in magnitude (solve), or
+// differences of inputs at most `largest` in magnitude (MovingPlane: twice that for theirs).
 double coplanarity_error(double largest) {
     // 256 subnormals: products that underflow, and up to 60 halvings of subnormal coefficients
     // (each average may round by half a subnormal, which the relative term does not cover there).
@@ -393,8 +396,13 @@ using Edges = std::array<const Path*, 4>;
 //
 // First the times: F = 0 needs X(t), Y(t) and Z(t) linearly dependent (X = -uY - vZ), so
 // their determinant D(t), a cubic, must vanish. Its Bernstein coefficients on [0, 1] are
-// averages of determinants of the inputs' differences (each at most 2M in size, 2Mu off):
-// within 480 M^3 u of exact (six products of three, five sums), bounded here by 4096 M^3 u.
+// averages of determinants of the inputs' differences X0 = x_from[0] - x_to[0] and the like,
+// each correctly rounded (within u of itself, relative): with R the largest magnitude of a
+// coordinate of the six, within 60 R^3 u of exact (six products of three, five sums), bounded
+// here by 4096 R^3 u. R, not the coordinates' magnitude: small features far from the origin
+// (cloth layers a gap apart, edges 0.008 long at coordinates near 1) had a bound 10^6 times
+// their cubic's size, so nearly parallel edges a gap apart had a flat cubic and ran out of
+// boxes.
 // Spans of time are halved earliest first by de Casteljau's rule (each coefficient of a half
 // an average of the whole's: the exact ones are the same averages of the exact ones, and each
 // halving adds at most 3u times the largest coefficient; with at most 60 halvings, 512u times
@@ -411,7 +419,7 @@ QueryResult solve(const Function& f, bool simplex, const QueryConfig& config, co
     double size = 0;
     for (const double c : whole) size = std::max(size, std::abs(c));
     if (!std::isfinite(size)) return solve_span(f, simplex, config, 0, 1, result), result;
-    const double error = coplanarity_error(f.largest) + 0x1p-44 * size;
+    const double error = coplanarity_error(f.reach) + 0x1p-44 * size;
     if (edges && size <= 4 * error) return solve_flat_edges(f, *edges, config);
     const double width = box_width(f, config.tolerance);
     struct Span {
