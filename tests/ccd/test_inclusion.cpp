@@ -289,6 +289,24 @@ bool exactly_inside(const Path& p, const Path& a, const Path& b, const Path& c, 
     return true;
 }
 
+// Where `meets(k)` (an exact test at time k/64) first holds, the query reports contact no later.
+template <class Meets>
+void expect_no_later_than_first_sample(const QueryResult& fast, Meets meets, const std::string& what) {
+    for (int k = 0; k <= 64; ++k) {
+        if (!meets(k)) continue;
+        EXPECT_TRUE(fast.hit) << what << " meeting at " << k << "/64";
+        EXPECT_LE(fast.toi, k / 64.0) << what;
+        return;
+    }
+}
+
+void expect_counts(std::uint64_t seed, int hits, int misses, int unchecked) {
+    std::printf("[ counts   ] %d hits, %d misses, %d hits the reference could not confirm\n", hits, misses, unchecked);
+    EXPECT_GT(hits, 25) << "seed " << seed;
+    EXPECT_GT(misses, 15) << "seed " << seed;
+    EXPECT_LE(unchecked, 10) << "seed " << seed;
+}
+
 // Planes in which dyadic coordinates stay exact: z = 0.375, x = -1.25, and the tilted plane
 // x + 2y + 4z = 1.5 (its normal has no zero component: any axis can be dropped). (s, r) on a
 // grid of 2^-20 within [-4, 4] lands exactly on each.
@@ -386,20 +404,13 @@ TEST(Inclusion, PlanarVertexFaceAgreesWithExactAndReferenceAnswers) {
             const std::string what = "seed " + std::to_string(seed) + " query " + std::to_string(q);
             const double delta = k_delta * (1 + far * 1e-3);
             const QueryResult fast = vertex_face_in_plane(x[0], x[1], x[2], x[3], drop, {delta, 1, 200000});
-            for (int k = 0; k <= 64; ++k) {
-                if (!exactly_inside(x[0], x[1], x[2], x[3], drop, mpq_class(k, 64))) continue;
-                EXPECT_TRUE(fast.hit) << what << " inside at " << k << "/64";
-                EXPECT_LE(fast.toi, k / 64.0) << what;
-                break;
-            }
+            expect_no_later_than_first_sample(
+                fast, [&](int k) { return exactly_inside(x[0], x[1], x[2], x[3], drop, mpq_class(k, 64)); }, what);
             const QueryResult slow = reference::vertex_face(x[0], x[1], x[2], x[3], {1e-9, 1, 100000});
             unchecked += !agrees_with_reference(true, x, fast, slow, delta, what);
             (fast.hit ? hits : misses) += 1;
         }
-        std::printf("[ counts   ] %d hits, %d misses, %d hits the reference could not confirm\n", hits, misses, unchecked);
-        EXPECT_GT(hits, 25) << "seed " << seed;
-        EXPECT_GT(misses, 15) << "seed " << seed;
-        EXPECT_LE(unchecked, 10) << "seed " << seed;
+        expect_counts(seed, hits, misses, unchecked);
     }
 }
 
@@ -528,20 +539,13 @@ TEST(Inclusion, FlatEdgeEdgeAgreesWithExactAndReferenceAnswers) {
             const std::string what = "seed " + std::to_string(seed) + " query " + std::to_string(q);
             const double delta = k_delta * (1 + far * 1e-3);
             const QueryResult fast = edge_edge(x[0], x[1], x[2], x[3], {delta, 1, 200000});
-            for (int k = 0; k <= 64; ++k) {
-                if (!exactly_crossing(x[0], x[1], x[2], x[3], drop, mpq_class(k, 64))) continue;
-                EXPECT_TRUE(fast.hit) << what << " meeting at " << k << "/64";
-                EXPECT_LE(fast.toi, k / 64.0) << what;
-                break;
-            }
+            expect_no_later_than_first_sample(
+                fast, [&](int k) { return exactly_crossing(x[0], x[1], x[2], x[3], drop, mpq_class(k, 64)); }, what);
             const QueryResult slow = reference::edge_edge(x[0], x[1], x[2], x[3], {1e-9, 1, 100000});
             unchecked += !agrees_with_reference(false, x, fast, slow, delta, what);
             (fast.hit ? hits : misses) += 1;
         }
-        std::printf("[ counts   ] %d hits, %d misses, %d hits the reference could not confirm\n", hits, misses, unchecked);
-        EXPECT_GT(hits, 25) << "seed " << seed;
-        EXPECT_GT(misses, 15) << "seed " << seed;
-        EXPECT_LE(unchecked, 10) << "seed " << seed;
+        expect_counts(seed, hits, misses, unchecked);
     }
 }
 

@@ -34,8 +34,7 @@ struct Function {
     Vec3 x0, dx, y0, dy, z0, dz;
     Vec3 x1, y1, z1;  ///< X, Y and Z at t = 1, as differences of the inputs (the coplanarity cubic's)
     Vec3 error;       ///< per axis: the bound on a value's rounding error, for t, u, v in [0, 1]
-    double largest = 0;  ///< the largest input coordinate's magnitude, every axis
-    double reach = 0;    ///< the largest magnitude of a coordinate of x0, x1, y0, y1, z0, z1
+    double reach = 0;  ///< the largest magnitude of a coordinate of x0, x1, y0, y1, z0, z1
 };
 
 Function make_function(const Path& x_from, const Path& x_to, const Path& y_from, const Path& y_to, const Path& z_from,
@@ -55,7 +54,6 @@ Function make_function(const Path& x_from, const Path& x_to, const Path& y_from,
     f.y1 = y1;
     f.z1 = z1;
     f.error = magnitude * magnitude_scale + Vec3::Constant(64 * std::numeric_limits<double>::denorm_min());
-    f.largest = magnitude.maxCoeff();
     for (const Vec3* d : {&x0, &x1, &y0, &y1, &z0, &z1}) f.reach = std::max(f.reach, d->cwiseAbs().maxCoeff());
     return f;
 }
@@ -287,8 +285,8 @@ std::array<Vec3, 4> crosses(const Path& y, const Path& z) {
 }
 
 // The bound on those coefficients' rounding where X, Y and Z are correctly rounded differences
-// of input coordinates whose own coordinates are at most `largest` in magnitude (solve), or
-// differences of inputs at most `largest` in magnitude (MovingPlane: twice that for theirs).
+// of input coordinates: `largest` at least the magnitude of their coordinates (solve), or of
+// the inputs' (MovingPlane: the differences are then at most twice it, within 500 largest^3 u).
 double coplanarity_error(double largest) {
     // 256 subnormals: products that underflow, and up to 60 halvings of subnormal coefficients
     // (each average may round by half a subnormal, which the relative term does not cover there).
@@ -398,7 +396,7 @@ using Edges = std::array<const Path*, 4>;
 // their determinant D(t), a cubic, must vanish. Its Bernstein coefficients on [0, 1] are
 // averages of determinants of the inputs' differences X0 = x_from[0] - x_to[0] and the like,
 // each correctly rounded (within u of itself, relative): with R the largest magnitude of a
-// coordinate of the six, within 60 R^3 u of exact (six products of three, five sums), bounded
+// coordinate of the six, within 62 R^3 u of exact (six products of three, five sums), bounded
 // here by 4096 R^3 u. R, not the coordinates' magnitude: small features far from the origin
 // (cloth layers a gap apart, edges 0.008 long at coordinates near 1) had a bound 10^6 times
 // their cubic's size, so nearly parallel edges a gap apart had a flat cubic and ran out of
@@ -494,6 +492,17 @@ constexpr double k_error_scale = 512 * 0x1p-53;
 
 using Quadratic = std::array<double, 3>;
 
+// The bound on orientation quadratics' coefficients (above): `reach` the largest magnitude of a
+// projected difference, `size` the largest coefficient (the halvings' share).
+double orientation_error(double reach, double size) {
+    return 64 * reach * reach * 0x1p-53 + 0x1p-44 * size + 256 * std::numeric_limits<double>::denorm_min();
+}
+
+// Whether every coefficient lies within four bounds of 0: halving would exclude nothing.
+bool flat_quadratic(const Quadratic& q, double error) {
+    return std::abs(q[0]) <= 4 * error && std::abs(q[1]) <= 4 * error && std::abs(q[2]) <= 4 * error;
+}
+
 // `reach` grows to the largest magnitude of a projected difference used.
 Quadratic orientation(const Path& from, const Path& to, const Path& p, int i, int j, double& reach) {
     const auto cross = [&](const Vec3& e, const Vec3& w) { return e[i] * w[j] - e[j] * w[i]; };
@@ -547,9 +556,8 @@ QueryResult solve_in_plane(const Function& f, const std::array<Quadratic, 3>& wh
         const Span s = stack[--waiting];
         if (s.a > config.t_max) break;  // spans are popped in time order: the rest is later
         if (planar_excluded(s.g, error)) continue;
-        bool flat = true;
-        for (const Quadratic& q : s.g) flat = flat && std::abs(q[0]) <= 4 * error && std::abs(q[1]) <= 4 * error && std::abs(q[2]) <= 4 * error;
-        if (last_halving(s.a, s.b, s.depth, width, flat)) {
+        const bool all_flat = std::all_of(s.g.begin(), s.g.end(), [&](const Quadratic& q) { return flat_quadratic(q, error); });
+        if (last_halving(s.a, s.b, s.depth, width, all_flat)) {
             if (solve_span(f, true, config, s.a, s.b, result)) return result;
             continue;
         }
@@ -630,7 +638,7 @@ QueryResult solve_flat_edges(const Function& f, const Edges& edges, const QueryC
         for (const Quadratic& q : ends) size = std::max({size, std::abs(q[0]), std::abs(q[1]), std::abs(q[2])});
     }
     QueryResult result;
-    const double error = 64 * reach * reach * 0x1p-53 + 0x1p-44 * size + 256 * std::numeric_limits<double>::denorm_min();
+    const double error = orientation_error(reach, size);
     if (!std::isfinite(error)) return solve_span(f, false, config, 0, 1, result), result;
     const double width = box_width(f, config.tolerance);
     struct Span {
@@ -645,11 +653,9 @@ QueryResult solve_flat_edges(const Function& f, const Edges& edges, const QueryC
         const Span s = stack[--waiting];
         if (s.a > config.t_max) break;  // spans are popped in time order: the rest is later
         if (sides_exclude(s.g, error)) continue;
-        bool flat = true;
-        for (const auto& ends : s.g) {
-            for (const Quadratic& q : ends) flat = flat && std::abs(q[0]) <= 4 * error && std::abs(q[1]) <= 4 * error && std::abs(q[2]) <= 4 * error;
-        }
-        if (last_halving(s.a, s.b, s.depth, width, flat)) {
+        bool all_flat = true;
+        for (const auto& ends : s.g) all_flat = all_flat && flat_quadratic(ends[0], error) && flat_quadratic(ends[1], error);
+        if (last_halving(s.a, s.b, s.depth, width, all_flat)) {
             if (solve_span(f, false, config, s.a, s.b, result)) return result;
             continue;
         }
@@ -702,7 +708,7 @@ QueryResult vertex_face_in_plane(const Path& p, const Path& a, const Path& b, co
                                      orientation(c, a, p, i, j, reach)};
     double size = 0;
     for (const Quadratic& q : g) size = std::max({size, std::abs(q[0]), std::abs(q[1]), std::abs(q[2])});
-    const double error = 64 * reach * reach * 0x1p-53 + 0x1p-44 * size + 256 * std::numeric_limits<double>::denorm_min();
+    const double error = orientation_error(reach, size);
     if (!std::isfinite(error)) return solve(f, true, config, nullptr);
     return solve_in_plane(f, g, error, config);
 }
