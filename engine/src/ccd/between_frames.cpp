@@ -127,14 +127,18 @@ public:
                 for (std::uint32_t j = 0; j < nb.count; ++j) leaf_pair(item.x, tx, na.index + i, item.y, ty, nb.index + j, out);
             return;
         }
-        // Split the larger (or the inner) node.
+        // Split the larger (or the inner) node; only the children whose boxes meet the other
+        // node's go on the stack (a push and a pop cost more than the test: on D's flying soup,
+        // 3% of the interval's instructions).
         const bool split_a = !na.is_leaf() && (nb.is_leaf() || na.box.half_area() >= nb.box.half_area());
         if (split_a) {
-            stack.push_back({item.x, item.y, item.a + 1, item.b, false});
-            stack.push_back({item.x, item.y, na.index, item.b, false});
+            for (const std::uint32_t child : {item.a + 1, na.index}) {
+                if (bvh::overlaps(tx.nodes[child].box, nb.box)) stack.push_back({item.x, item.y, child, item.b, false});
+            }
         } else {
-            stack.push_back({item.x, item.y, item.a, item.b + 1, false});
-            stack.push_back({item.x, item.y, item.a, nb.index, false});
+            for (const std::uint32_t child : {item.b + 1, nb.index}) {
+                if (bvh::overlaps(na.box, ty.nodes[child].box)) stack.push_back({item.x, item.y, item.a, child, false});
+            }
         }
     }
 
