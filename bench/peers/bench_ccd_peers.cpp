@@ -3,11 +3,12 @@
 // then cubic root finding per vertex-face and edge-edge query (peers/ccd_root_finding.hpp).
 //
 //   build-peer/bench/bench_ccd_peers --scene NAME[:PRESET] --method ours|peer [--threads 2]
-//       [--self | --no-self] [--frames N] [--pairs FILE] [--peer-build low|refit]
+//       [--self | --no-self] [--frames N | A:B | A:] [--pairs FILE] [--peer-build low|refit]
 //
-// Runs one side over every interval k -> k+1 of the scene's first N frames (all without
-// --frames), timing only the detection: ours BetweenFrames::detect (its swept trees are kept
-// and refit between intervals), the peer's refit + collide + narrow phase (its Embree scenes
+// Runs one side over every interval k -> k+1 of the scene's first N frames, or of frames A..B-1
+// (half-open, as `collidescope check --frames A:B`; all frames without --frames), timing only
+// the detection: ours BetweenFrames::detect (its swept trees are kept and refit between
+// intervals), the peer's refit + collide + narrow phase (its Embree scenes
 // likewise). Both sides time their first interval too, which builds their trees. Both run
 // under a tbb::global_control of T threads (as `collidescope check --between-frames
 // --threads T`); the peer's Embree device gets `threads=T` besides (as the per-frame peer).
@@ -59,7 +60,8 @@ struct Options {
     std::string method;               // ours or peer
     int threads = 2;
     std::optional<bool> self;         // unset: the scene's setting
-    std::uint32_t frames = 0;         // 0: all
+    std::uint32_t first = 0;          // the first frame used
+    std::uint32_t frames = 0;         // the end of the range (exclusive); 0: the scene's end
     std::string pairs_file;
     std::string compare_ours, compare_peer;
     bool peer_rebuild = true;  // --peer-build low (default) or refit
@@ -78,7 +80,16 @@ Options parse(int argc, char** argv) {
         else if (arg == "--threads") options.threads = std::stoi(value());
         else if (arg == "--self") options.self = true;
         else if (arg == "--no-self") options.self = false;
-        else if (arg == "--frames") options.frames = static_cast<std::uint32_t>(std::stoul(value()));
+        else if (arg == "--frames") {
+            const std::string range = value();
+            const std::size_t colon = range.find(':');
+            if (colon == std::string::npos) {
+                options.frames = static_cast<std::uint32_t>(std::stoul(range));
+            } else {
+                options.first = static_cast<std::uint32_t>(std::stoul(range.substr(0, colon)));
+                if (colon + 1 < range.size()) options.frames = static_cast<std::uint32_t>(std::stoul(range.substr(colon + 1)));
+            }
+        }
         else if (arg == "--pairs") options.pairs_file = value();
         else if (arg == "--peer-build") {
             const std::string build = value();
@@ -104,7 +115,8 @@ struct SceneRun {
     Scene scene;
     std::string name;
     bool self = false;
-    std::uint32_t frames = 0;  // frames used: intervals are frames - 1
+    std::uint32_t first = 0;   // frames used: first .. frames - 1, intervals frames - first - 1
+    std::uint32_t frames = 0;
 };
 
 SceneRun open(const Options& options) {
@@ -112,16 +124,17 @@ SceneRun open(const Options& options) {
     run.name = options.inputs.empty() ? options.scene : run.scene.name;
     run.self = options.self.value_or(run.scene.self_collision);
     const std::uint32_t count = run.scene.source->frame_count();
+    run.first = options.first;
     run.frames = options.frames > 0 ? std::min(options.frames, count) : count;
-    if (run.frames < 2) throw std::invalid_argument("the scene needs at least two frames");
+    if (run.frames < run.first + 2) throw std::invalid_argument("the range needs at least two frames");
     return run;
 }
 
 // Calls visit(from, to) for every interval, reading each frame once.
 template <typename Visit>
 void for_each_interval(SceneRun& run, Visit&& visit) {
-    Frame from = run.scene.source->frame(0);
-    for (std::uint32_t f = 0; f + 1 < run.frames; ++f) {
+    Frame from = run.scene.source->frame(run.first);
+    for (std::uint32_t f = run.first; f + 1 < run.frames; ++f) {
         Frame to = run.scene.source->frame(f + 1);
         visit(from, to);
         from = std::move(to);
@@ -256,7 +269,7 @@ int run_side(const Options& options) {
     const SideTotals t = ours ? run_ours(run, writer) : run_peer(run, options.threads, options.peer_rebuild, writer);
     std::size_t triangles = 0;
     for (std::uint32_t o = 0; o < run.scene.source->object_count(); ++o) {
-        triangles += run.scene.source->frame(0).objects[o].triangle_count();
+        triangles += run.scene.source->frame(run.first).objects[o].triangle_count();
     }
     std::printf("{\"scene\": \"%s\", \"method\": \"%s\", \"self\": %s, \"threads\": %d, \"triangles\": %zu, "
                 "\"intervals\": %u, \"total_ms\": %.3f, \"%s\": %.3f, \"collide_ms\": %.3f, \"narrow_ms\": %.3f, "

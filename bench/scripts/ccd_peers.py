@@ -7,7 +7,9 @@ Usage: bench/scripts/ccd_peers.py SCENE[:PRESET][@FRAMES] ... [--runs 3] [--thre
 
 For each scene, --runs rounds run `bench_ccd_peers --method ours` and `--method peer` once each,
 each in a fresh process, in alternating order (round 0 ours first, round 1 the peer first, ...),
-over every interval of the scene's frames (@FRAMES: its first FRAMES frames only). Self-collision
+over every interval of the scene's frames (@N: its first N frames only; @A:B or @A: frames A..B-1
+or from A on, as `collidescope check --frames`, e.g. D@0:100 and D@100:, the two halves of D
+whose mesh changes at frame 100). Self-collision
 follows the scene (as `collidescope check --scene` decides it) unless --self names it. Round 0
 writes both sides' pairs (--pairs-dir, removed afterwards) and `bench_ccd_peers --compare` then
 counts the pairs the peer missed and its extra pairs, with their diagnosis. Every round of a side
@@ -57,7 +59,7 @@ def spread(values):
 def measure(args, spec, forced_self, pairs_dir, rows):
     name, base = scene_args(spec, forced_self)
     runs = {"ours": [], "peer": []}
-    files = {side: os.path.join(pairs_dir, "%s.%s.bin" % (name.replace(":", "_"), side)) for side in runs}
+    files = {side: os.path.join(pairs_dir, "%s.%s.bin" % (spec.replace(":", "_").replace("@", "_"), side)) for side in runs}
     for round_ in range(args.runs):
         for side in (("ours", "peer") if round_ % 2 == 0 else ("peer", "ours")):
             command = [args.bin] + base + ["--method", side, "--threads", str(args.threads)]
