@@ -60,8 +60,11 @@ struct IntervalStats {
     double narrow_ms = 0;                 ///< traversal and the pairs' tests
     std::uint64_t candidate_pairs = 0;    ///< triangle pairs whose swept boxes overlap
     std::uint64_t start_contacts = 0;     ///< pairs touching at t = 0
-    std::uint64_t primitive_queries = 0;  ///< vertex-face and edge-edge queries run (after their box test)
-    std::uint64_t inclusion_boxes = 0;    ///< boxes the queries evaluated
+    /// Vertex-face and edge-edge queries the pairs asked (after their box test and filters). A
+    /// query that several pairs ask is solved once where they meet on one thread and counted
+    /// at each pair, as its boxes are below, so that the counts do not depend on the threads.
+    std::uint64_t primitive_queries = 0;
+    std::uint64_t inclusion_boxes = 0;    ///< boxes of those queries' solutions
     std::uint64_t contacts = 0;           ///< pairs reported
     std::uint64_t pass_throughs = 0;      ///< of them, apart at both ends
     std::uint64_t unresolved = 0;         ///< of them, with a query that hit max_boxes

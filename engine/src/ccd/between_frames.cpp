@@ -36,7 +36,20 @@ struct SweptTree {
     /// node the projected orientations kept throughout the interval (swept_node_sides).
     bool patched = false;
     std::vector<std::uint8_t> sides;
+    /// Some vertex lies in two triangles (not a soup): its queries recur across pairs.
+    bool shares_vertices = false;
 };
+
+bool shares_vertices(const Topology& topology) {
+    std::vector<bool> used(topology.vertex_count, false);
+    for (const TriIndices& t : topology.triangles) {
+        for (const std::uint32_t v : t) {
+            if (v < used.size() && used[v]) return true;
+            if (v < used.size()) used[v] = true;
+        }
+    }
+    return false;
+}
 
 // Fits `swept` to the triangles' boxes over the interval (each the box of its corners at both
 // ends): built on the end positions for a new topology, then refit; rebuilt when the refit has
@@ -55,6 +68,7 @@ void fit_swept(SweptTree& swept, const Topology& topology, std::span<const Vec3>
     if (swept.revision != topology.revision || topology.revision == 0 || tree.empty() || swept.self != self) {
         swept.self = self;
         swept.patched = self && bvh::surface_like(topology.triangles);  // O(n log n): once per topology
+        swept.shares_vertices = shares_vertices(topology);
         build();
         swept.revision = topology.revision;
         built = true;
@@ -88,6 +102,7 @@ struct Item {
 struct ThreadResult {
     std::vector<IntervalContact> contacts;
     std::uint64_t candidates = 0, start_contacts = 0, queries = 0, boxes = 0;
+    ccd::QueryCache* cache = nullptr;  ///< this thread's, kept from interval to interval
 };
 
 class Walk {
@@ -161,7 +176,13 @@ private:
             motion.b[i] = {b0.vertices[motion.ib[i]], b1.vertices[motion.ib[i]]};
         }
         motion.self = pair.obj_a == pair.obj_b;
-        const ccd::PairOutcome outcome = ccd::test_pair(motion, m_tolerance, m_max_boxes);
+        motion.object_a = pair.obj_a;
+        motion.tri_a = pair.tri_a;
+        motion.object_b = pair.obj_b;
+        motion.tri_b = pair.tri_b;
+        motion.shares_a = m_trees[pair.obj_a]->shares_vertices;
+        motion.shares_b = m_trees[pair.obj_b]->shares_vertices;
+        const ccd::PairOutcome outcome = ccd::test_pair(motion, m_tolerance, m_max_boxes, out.cache);
         out.queries += outcome.queries;
         out.boxes += outcome.boxes;
         out.start_contacts += outcome.start_contact;
@@ -181,6 +202,7 @@ private:
 
 struct BetweenFrames::State {
     std::vector<SweptTree> trees;
+    tbb::enumerable_thread_specific<ccd::QueryCache> caches;  ///< each thread's query results
 };
 
 BetweenFrames::BetweenFrames(BetweenFramesOptions options) : m_options(options), m_state(std::make_unique<State>()) {
@@ -205,6 +227,7 @@ IntervalResult BetweenFrames::detect(const Frame& from, const Frame& to) {
     const Stopwatch narrow;
     std::vector<const SweptTree*> trees;
     for (const SweptTree& t : m_state->trees) trees.push_back(&t);
+    for (ccd::QueryCache& cache : m_state->caches) cache.next_interval();
     const Walk walk(from, to, trees, stats.tolerance, m_options.max_boxes);
     // The roots: every object pair whose swept boxes meet, and each object's own.
     std::vector<Item> items;
@@ -222,6 +245,7 @@ IntervalResult BetweenFrames::detect(const Frame& from, const Frame& to) {
     tbb::enumerable_thread_specific<ThreadResult> per_thread;
     {
         ThreadResult& serial = per_thread.local();
+        serial.cache = &m_state->caches.local();
         constexpr std::size_t k_items = 256;
         std::vector<Item> next;
         while (!items.empty() && items.size() < k_items) {
@@ -232,6 +256,7 @@ IntervalResult BetweenFrames::detect(const Frame& from, const Frame& to) {
     }
     tbb::parallel_for(std::size_t{0}, items.size(), [&](std::size_t k) {
         ThreadResult& out = per_thread.local();
+        if (out.cache == nullptr) out.cache = &m_state->caches.local();
         thread_local std::vector<Item> stack;
         stack.assign(1, items[k]);
         while (!stack.empty()) {

@@ -10,7 +10,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
+#include <optional>
+#include <tuple>
+#include <utility>
 
 namespace collidescope::ccd {
 namespace {
@@ -192,6 +196,14 @@ bool triangles_apart(const PairMotion& m, double largest, int end) {
     return false;
 }
 
+// The largest magnitude of a coordinate of these paths (a query's own: its filter's bound then
+// depends on its features alone, as a stored result must).
+double largest_of(std::initializer_list<const Path*> paths) {
+    double largest = 0;
+    for (const Path* path : paths) largest = std::max({largest, (*path)[0].cwiseAbs().maxCoeff(), (*path)[1].cwiseAbs().maxCoeff()});
+    return largest;
+}
+
 // A vertex that stays clear of a face: apart along each of the face's edge normals within its
 // plane, or along the line from the face's centroid to the vertex, at t = 0.
 bool vertex_clear_of_face(const Path& p, const std::array<Path, 3>& face, double largest) {
@@ -213,7 +225,7 @@ bool edges_clear(const Path& p0, const Path& p1, const Path& q0, const Path& q1,
 
 }  // namespace
 
-PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_boxes) {
+PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_boxes, QueryCache* cache) {
     PairOutcome out;
     if (m.self && std::is_permutation(m.ia.begin(), m.ia.end(), m.ib.begin())) return out;  // the same triangle
     double largest = 0;
@@ -266,7 +278,9 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
     const auto record = [&](const QueryResult& r) {
         ++out.queries;
         out.boxes += r.boxes;
-        if (!r.hit) return;
+        // A cached result covers the whole interval: a contact after the earliest known is
+        // what the query, asked only up to that time, would not have found.
+        if (!r.hit || (out.contact && r.toi > config.t_max)) return;
         if (!out.contact || r.toi < out.toi) out.toi = r.toi;
         out.contact = true;
         out.resolved = out.resolved && r.resolved;
@@ -279,21 +293,67 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
             fit_bounds(bounds_until);
         }
     };
-    const auto vertex_query = [&](const Path& p, const std::array<Path, 3>& face) {
-        return planar ? vertex_face_in_plane(p, face[0], face[1], face[2], plane_axis, config)
-                               : vertex_face(p, face[0], face[1], face[2], config);
+    // A query through the cache (where its features recur across pairs): its filter (fixed
+    // directions at t = 0) and its solution are pure functions of its key, so both are stored.
+    // Found there, it is used as it is; else, if not cleared, before the pair has a contact it
+    // is solved over the whole interval and stored, after it solved up to the contact on the full
+    // budget and not stored. Either way the pair's outcome does not depend on what the cache
+    // held. Returns nothing for a query its filter clears.
+    const auto ask = [&](const QueryKey& key, bool recurs, const auto& clear, const auto& solve) -> std::optional<QueryResult> {
+        if (cache == nullptr || !recurs) {
+            if (clear()) return std::nullopt;
+            return solve(config);
+        }
+        if (const CachedQuery* found = cache->find(key)) {
+            if (found->cleared) return std::nullopt;
+            return found->result;
+        }
+        if (clear()) {
+            cache->insert(key, {QueryResult{}, true});
+            return std::nullopt;
+        }
+        if (out.contact) return solve(QueryConfig{tolerance, config.t_max, max_boxes});
+        const QueryResult result = solve(config);
+        cache->insert(key, {result, false});
+        return result;
+    };
+    const auto vertex_query = [&](std::uint32_t vertex_object, std::uint32_t v, const Path& p, std::uint32_t face_object,
+                                  std::uint32_t tri, const std::array<Path, 3>& face) {
+        const bool recurs = vertex_object == m.object_a ? m.shares_a : m.shares_b;
+        return ask(
+            QueryKey::vertex_face(vertex_object, v, face_object, tri, planar ? plane_axis : -1), recurs,
+            [&] { return !planar && vertex_clear_of_face(p, face, largest_of({&p, &face[0], &face[1], &face[2]})); },
+            [&](const QueryConfig& c) {
+                return planar ? vertex_face_in_plane(p, face[0], face[1], face[2], plane_axis, c)
+                              : vertex_face(p, face[0], face[1], face[2], c);
+            });
+    };
+    // Each edge with its smaller vertex index first, the two in (object, indices) order: the
+    // same query whichever pair asks it.
+    const auto edge_query = [&](std::uint32_t p_object, std::uint32_t p0, std::uint32_t p1, const Path* pp0, const Path* pp1,
+                                std::uint32_t q_object, std::uint32_t q0, std::uint32_t q1, const Path* pq0, const Path* pq1) {
+        if (p1 < p0) std::swap(p0, p1), std::swap(pp0, pp1);
+        if (q1 < q0) std::swap(q0, q1), std::swap(pq0, pq1);
+        if (std::tie(q_object, q0, q1) < std::tie(p_object, p0, p1)) {
+            std::swap(p_object, q_object), std::swap(p0, q0), std::swap(p1, q1), std::swap(pp0, pq0), std::swap(pp1, pq1);
+        }
+        return ask(
+            QueryKey::edge_edge(p_object, p0, p1, q_object, q0, q1), m.shares_a || m.shares_b,
+            [&] { return edges_clear(*pp0, *pp1, *pq0, *pq1, largest_of({pp0, pp1, pq0, pq1})); },
+            [&](const QueryConfig& c) { return edge_edge(*pp0, *pp1, *pq0, *pq1, c); });
+    };
+    const auto record_if = [&](const std::optional<QueryResult>& r) {
+        if (r) record(*r);
     };
     // Each vertex of one against the other's face (not a vertex of that face, for self).
     for (int i = 0; i < 3; ++i) {
         refit_bounds();
-        if (!(m.self && shares(m.ib, m.ia[i])) && point_a[i].overlaps(face_b) &&
-            (planar || !vertex_clear_of_face(m.a[i], m.b, largest))) {
-            record(vertex_query(m.a[i], m.b));
+        if (!(m.self && shares(m.ib, m.ia[i])) && point_a[i].overlaps(face_b)) {
+            record_if(vertex_query(m.object_a, m.ia[i], m.a[i], m.object_b, m.tri_b, m.b));
         }
         refit_bounds();
-        if (!(m.self && shares(m.ia, m.ib[i])) && point_b[i].overlaps(face_a) &&
-            (planar || !vertex_clear_of_face(m.b[i], m.a, largest))) {
-            record(vertex_query(m.b[i], m.a));
+        if (!(m.self && shares(m.ia, m.ib[i])) && point_b[i].overlaps(face_a)) {
+            record_if(vertex_query(m.object_b, m.ib[i], m.b[i], m.object_a, m.tri_a, m.a));
         }
     }
     // Each edge against each edge (not sharing a vertex, for self), unless in one plane.
@@ -308,8 +368,9 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
             edge_a.grow(point_a[i1]);
             Bounds edge_b = point_b[j];
             edge_b.grow(point_b[j1]);
-            if (edge_a.overlaps(edge_b) && !edges_clear(m.a[i], m.a[i1], m.b[j], m.b[j1], largest)) {
-                record(edge_edge(m.a[i], m.a[i1], m.b[j], m.b[j1], config));
+            if (edge_a.overlaps(edge_b)) {
+                record_if(edge_query(m.object_a, m.ia[i], m.ia[i1], &m.a[i], &m.a[i1], m.object_b, m.ib[j], m.ib[j1], &m.b[j],
+                                     &m.b[j1]));
             }
         }
     }

@@ -3,17 +3,23 @@
 // exact per-frame test), else the earliest contact of its vertex-face and edge-edge queries.
 
 #include "ccd/inclusion.hpp"
+#include "ccd/query_cache.hpp"
 
 #include <array>
 
 namespace collidescope::ccd {
 
-/// The two triangles at both ends: a[i] is corner i's path; ia, ib the vertex indices (used
-/// only when `self`: the self rule).
+/// The two triangles at both ends: a[i] is corner i's path; ia, ib the vertex indices (the
+/// self rule when `self`, and the edges' order in their queries); objects and triangle indices
+/// name the features to a QueryCache.
 struct PairMotion {
     std::array<Path, 3> a, b;
     TriIndices ia{}, ib{};
     bool self = false;
+    std::uint32_t object_a = 0, tri_a = 0, object_b = 0, tri_b = 0;
+    /// Each object's triangles share vertices (not a soup): only then do its queries recur
+    /// across pairs, and go through the cache.
+    bool shares_a = false, shares_b = false;
 };
 
 /// What test_pair found.
@@ -23,12 +29,16 @@ struct PairOutcome {
     bool start_contact = false;  ///< touching at t = 0 (toi 0)
     bool end_contact = false;    ///< touching at t = 1 (computed only for a contact)
     bool resolved = true;
-    std::uint32_t queries = 0;   ///< primitive queries run (past their box test)
-    std::uint64_t boxes = 0;
+    std::uint32_t queries = 0;   ///< primitive queries asked (past their box test and filters)
+    std::uint64_t boxes = 0;     ///< boxes of their solutions (a cached one's counted again)
 };
 
 /// Whether the pair touches during the interval, and from when. Of one object (`self`),
-/// features that share a vertex index are not queried and the ends use the self rule.
-PairOutcome test_pair(const PairMotion& motion, double tolerance, std::uint32_t max_boxes);
+/// features that share a vertex index are not queried and the ends use the self rule. With
+/// `cache`, a query whose features recur across pairs (shares_a, shares_b) is looked up there
+/// first, and one not found before the pair's first contact is solved and stored. Without,
+/// a query asked after a contact gets a smaller budget (4096 boxes); otherwise the outcome is
+/// the same with or without a cache, and whatever the cache holds.
+PairOutcome test_pair(const PairMotion& motion, double tolerance, std::uint32_t max_boxes, QueryCache* cache = nullptr);
 
 }  // namespace collidescope::ccd
