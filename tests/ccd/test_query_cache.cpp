@@ -131,7 +131,9 @@ TEST(QueryCache, PairsGetTheSameOutcomeThroughACacheInAnyOrder) {
                 if (cached.contact && expected.contact) {
                     EXPECT_EQ(cached.toi, expected.toi) << what;
                 }
+                EXPECT_EQ(cached.resolved, expected.resolved) << what;
                 EXPECT_EQ(cached.queries, expected.queries) << what;  // asked, found or solved
+                EXPECT_EQ(cached.boxes, expected.boxes) << what;      // a found one's counted as solved
                 queries += cached.queries;
             }
             asked += queries;

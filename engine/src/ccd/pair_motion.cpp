@@ -278,9 +278,7 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
     const auto record = [&](const QueryResult& r) {
         ++out.queries;
         out.boxes += r.boxes;
-        // A cached result covers the whole interval: a contact after the earliest known is
-        // what the query, asked only up to that time, would not have found.
-        if (!r.hit || (out.contact && r.toi > config.t_max)) return;
+        if (!r.hit) return;
         if (!out.contact || r.toi < out.toi) out.toi = r.toi;
         out.contact = true;
         out.resolved = out.resolved && r.resolved;
@@ -294,26 +292,26 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
         }
     };
     // A query through the cache (where its features recur across pairs): its filter (fixed
-    // directions at t = 0) and its solution are pure functions of its key, so both are stored.
-    // Found there, it is used as it is; else, if not cleared, before the pair has a contact it
-    // is solved over the whole interval and stored, after it solved up to the contact on the full
-    // budget and not stored. Either way the pair's outcome does not depend on what the cache
-    // held. Returns nothing for a query its filter clears.
+    // directions at t = 0) and its solution over the whole interval are pure functions of its
+    // key, so both are stored, and a query found there is not asked again. After the pair has a
+    // contact a query is solved only up to it, on the smaller budget, as without a cache, and
+    // not stored (a stored whole-interval solution would count other boxes). So the pair's
+    // outcome and its counts are the same with or without a cache, whatever it held. Returns
+    // nothing for a query its filter clears.
     const auto ask = [&](const QueryKey& key, bool recurs, const auto& clear, const auto& solve) -> std::optional<QueryResult> {
         if (cache == nullptr || !recurs) {
             if (clear()) return std::nullopt;
             return solve(config);
         }
-        if (const CachedQuery* found = cache->find(key)) {
-            if (found->cleared) return std::nullopt;
-            return found->result;
-        }
-        if (clear()) {
+        const CachedQuery* found = cache->find(key);
+        if (found != nullptr && found->cleared) return std::nullopt;
+        if (found == nullptr && clear()) {
             cache->insert(key, {QueryResult{}, true});
             return std::nullopt;
         }
-        if (out.contact) return solve(QueryConfig{tolerance, config.t_max, max_boxes});
-        const QueryResult result = solve(config);
+        if (out.contact) return solve(config);
+        if (found != nullptr) return found->result;
+        const QueryResult result = solve(config);  // the whole interval, the full budget
         cache->insert(key, {result, false});
         return result;
     };

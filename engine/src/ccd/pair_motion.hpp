@@ -30,15 +30,15 @@ struct PairOutcome {
     bool end_contact = false;    ///< touching at t = 1 (computed only for a contact)
     bool resolved = true;
     std::uint32_t queries = 0;   ///< primitive queries asked (past their box test and filters)
-    std::uint64_t boxes = 0;     ///< boxes of their solutions (a cached one's counted again)
+    std::uint64_t boxes = 0;     ///< boxes of their solutions (a stored one's counted again)
 };
 
 /// Whether the pair touches during the interval, and from when. Of one object (`self`),
 /// features that share a vertex index are not queried and the ends use the self rule. With
-/// `cache`, a query whose features recur across pairs (shares_a, shares_b) is looked up there
-/// first, and one not found before the pair's first contact is solved and stored. Without,
-/// a query asked after a contact gets a smaller budget (4096 boxes); otherwise the outcome is
-/// the same with or without a cache, and whatever the cache holds.
+/// `cache`, a query whose features recur across pairs (shares_a, shares_b) is taken from
+/// there when it was stored: its filter's verdict, and before the pair's first contact its
+/// solution (a query asked after a contact is solved up to it, as without a cache). The
+/// outcome and its counts are the same with or without a cache, whatever the cache holds.
 PairOutcome test_pair(const PairMotion& motion, double tolerance, std::uint32_t max_boxes, QueryCache* cache = nullptr);
 
 }  // namespace collidescope::ccd
