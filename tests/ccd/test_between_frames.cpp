@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 
 namespace collidescope {
@@ -190,6 +191,39 @@ TEST(BetweenFrames, BadIntervalsAreOneLineErrors) {
         const auto single = make_memory_source({"a"}, {{sheet}});
         EXPECT_THROW(BetweenFrames().detect(source->frame(0), single->frame(0)), InputError);
     }
+}
+
+// The frames' one scan: the first unfit coordinate named by frame, object and vertex (in
+// either frame, NaN, infinity or above 1e100), and the default tolerance from both frames' box.
+TEST(BetweenFrames, UnfitCoordinatesAreNamedAndTheToleranceSpansBothFrames) {
+    const MeshData sheet = grid_sheet(2, 1.0);  // [0, 1] x [0, 1] in z = 0
+    const auto error_of = [&](std::size_t frame, std::size_t vertex, double value) {
+        auto [a, b] = interval({sheet, sheet}, {sheet, sheet});
+        // Set past the source, which would refuse it (the engine's own check is tested here).
+        std::vector<Vec3> changed = sheet.vertices;
+        changed[vertex].y() = value;
+        (frame == 0 ? a : b).objects[1].vertices = std::move(changed);
+        try {
+            BetweenFrames().detect(a, b);
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(error_of(1, 2, std::nan("")),
+              "frame 1, object 1: vertex 2 is not finite (between-frames detection needs finite coordinates)");
+    EXPECT_EQ(error_of(0, 4, -std::numeric_limits<double>::infinity()),
+              "frame 0, object 1: vertex 4 is not finite (between-frames detection needs finite coordinates)");
+    EXPECT_EQ(error_of(1, 0, 2e100), "frame 1, object 1: vertex 0 has a coordinate above 1e100 (between-frames detection's limit)");
+    EXPECT_EQ(error_of(0, 3, 1e100), "no error");
+
+    // The box of both frames: the sheet at z = 0, then moved up by 4 (extent 4 along z).
+    const auto [from, to] = interval({sheet}, {translated(sheet, {0, 0, 4})});
+    EXPECT_DOUBLE_EQ(BetweenFrames().detect(from, to).stats.tolerance, 4e-6);
+    BetweenFramesOptions set;
+    set.tolerance = 0.25;
+    EXPECT_EQ(BetweenFrames(set).detect(from, to).stats.tolerance, 0.25);
+    EXPECT_DOUBLE_EQ(between_frames_reference(from, to, {}).stats.tolerance, 4e-6);
 }
 
 // Random scenes: the fast detector against the reference, interval by interval.

@@ -4,12 +4,15 @@
 // every object pair whose swept boxes meet are walked together (and each object's own, with
 // self-collision, skipping nodes whose triangles are proven embedded throughout the interval:
 // swept_patches.hpp), and each pair of triangles whose swept boxes overlap is tested
-// (pair_motion.hpp) where the walk finds it, in parallel over the walk's top items.
+// (pair_motion.hpp) where the walk finds it, in parallel over the walk's top items. Between
+// objects the walk runs on the trees' 4-wide float layouts (bvh/wide_step.hpp), as the
+// per-frame traversal does; it reaches exactly the binary walk's pairs.
 
 #include "collidescope/between_frames.hpp"
 
 #include "bvh/bvh.hpp"
 #include "bvh/surface_patches.hpp"
+#include "bvh/wide_step.hpp"
 #include "ccd/interval_checks.hpp"
 #include "ccd/pair_motion.hpp"
 #include "ccd/swept_patches.hpp"
@@ -55,9 +58,10 @@ bool shares_vertices(const Topology& topology) {
 // ends): built on the end positions for a new topology, then refit; rebuilt when the refit has
 // made it more than twice as costly as at its best since its build (the motion's own growth
 // of the boxes is in both). With `self` on a surface, the tree also carries the patches of
-// self-collision culling and their sides over the interval.
+// self-collision culling and their sides over the interval. With `wide` (the object may be
+// walked against another), its wide layout is fitted too.
 void fit_swept(SweptTree& swept, const Topology& topology, std::span<const Vec3> from, std::span<const Vec3> to,
-               bool self) {
+               bool self, bool wide) {
     Tree& tree = swept.tree;
     const auto build = [&] {
         bvh::BuildConfig config;
@@ -91,12 +95,15 @@ void fit_swept(SweptTree& swept, const Topology& topology, std::span<const Vec3>
     } else {
         swept.sides.clear();
     }
+    if (wide) bvh::fit_wide(tree);
 }
 
-// A unit of the walk: node a of object x against node b of object y, or (self) below one node.
+// A unit of the walk: node a of object x against node b of object y, or (self) below one node;
+// with `wide`, a and b are entries of the wide layouts (x != y) whose boxes overlap.
 struct Item {
     std::uint32_t x, y, a, b;
     bool self;
+    bool wide = false;
 };
 
 struct ThreadResult {
@@ -115,6 +122,16 @@ public:
     void step(const Item& item, std::vector<Item>& stack, ThreadResult& out) const {
         const Tree& tx = m_trees[item.x]->tree;
         const Tree& ty = m_trees[item.y]->tree;
+        if (item.wide) {
+            bvh::wide::step(
+                tx, item.a, ty, item.b,
+                [&](std::uint32_t a, std::uint32_t b) { stack.push_back({item.x, item.y, a, b, false, true}); },
+                [&](std::uint32_t first_a, std::uint32_t count_a, std::uint32_t first_b, std::uint32_t count_b) {
+                    for (std::uint32_t i = first_a; i < first_a + count_a; ++i)
+                        for (std::uint32_t j = first_b; j < first_b + count_b; ++j) leaf_pair(item.x, tx, i, item.y, ty, j, out);
+                });
+            return;
+        }
         const bvh::Node& na = tx.nodes[item.a];
         if (item.self) {
             // Triangles proven embedded throughout the interval: no pair below to test.
@@ -158,10 +175,15 @@ public:
     }
 
 private:
-    // Slots sa of x's tree and sb of y's: a candidate when their swept boxes overlap.
+    // Slots sa of x's tree and sb of y's: a candidate when their swept boxes overlap (most
+    // slot pairs of two leaves do not: the test stays inline, the candidate's work does not).
     void leaf_pair(std::uint32_t x, const Tree& tx, std::uint32_t sa, std::uint32_t y, const Tree& ty, std::uint32_t sb,
                    ThreadResult& out) const {
-        if (!bvh::overlaps(tx.leaf_boxes[sa], ty.leaf_boxes[sb])) return;
+        if (bvh::overlaps(tx.leaf_boxes[sa], ty.leaf_boxes[sb])) candidate(x, tx, sa, y, ty, sb, out);
+    }
+
+    [[gnu::noinline]] void candidate(std::uint32_t x, const Tree& tx, std::uint32_t sa, std::uint32_t y, const Tree& ty,
+                                     std::uint32_t sb, ThreadResult& out) const {
         ++out.candidates;
         const TrianglePair pair = make_pair_ordered(x, tx.triangle_ids[sa], y, ty.triangle_ids[sb]);
         ccd::PairMotion motion;
@@ -212,16 +234,16 @@ BetweenFrames::~BetweenFrames() = default;
 
 IntervalResult BetweenFrames::detect(const Frame& from, const Frame& to) {
     const Stopwatch whole;
-    ccd::check_interval(from, to);
+    const double tolerance = ccd::check_interval(from, to, m_options.tolerance);
     IntervalResult result;
     IntervalStats& stats = result.stats;
-    stats.tolerance = ccd::interval_tolerance(from, to, m_options.tolerance);
+    stats.tolerance = tolerance;
     const std::size_t n = from.objects.size();
     m_state->trees.resize(n);
     Stopwatch broad;
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
         fit_swept(m_state->trees[i], *from.objects[i].topology, from.objects[i].vertices.span(),
-                  to.objects[i].vertices.span(), m_options.self_collision);
+                  to.objects[i].vertices.span(), m_options.self_collision, n > 1);
     });
     stats.broad_ms = broad.elapsed_ms();
     const Stopwatch narrow;
@@ -235,7 +257,12 @@ IntervalResult BetweenFrames::detect(const Frame& from, const Frame& to) {
         if (trees[x]->tree.empty()) continue;
         if (m_options.self_collision) items.push_back({x, x, 0, 0, true});
         for (std::uint32_t y = x + 1; y < n; ++y) {
-            if (!trees[y]->tree.empty() && bvh::overlaps(trees[x]->tree.nodes[0].box, trees[y]->tree.nodes[0].box)) {
+            const Tree& tx = trees[x]->tree;
+            const Tree& ty = trees[y]->tree;
+            if (ty.empty() || !bvh::overlaps(tx.nodes[0].box, ty.nodes[0].box)) continue;
+            if (bvh::wide_fitted(tx) && bvh::wide_fitted(ty)) {
+                items.push_back({x, y, bvh::wide_root(tx), bvh::wide_root(ty), false, true});
+            } else {
                 items.push_back({x, y, 0, 0, false});
             }
         }

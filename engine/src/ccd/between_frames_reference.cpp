@@ -91,9 +91,8 @@ void test(const TrianglePair& pair, const Triangle& a, const Triangle& b, bool s
 }  // namespace
 
 IntervalResult between_frames_reference(const Frame& from, const Frame& to, const BetweenFramesOptions& options) {
-    ccd::check_interval(from, to);
+    const double tolerance = ccd::check_interval(from, to, options.tolerance);
     IntervalResult result;
-    const double tolerance = ccd::interval_tolerance(from, to, options.tolerance);
     result.stats.tolerance = tolerance;
     const auto n = static_cast<std::uint32_t>(from.objects.size());
     for (std::uint32_t x = 0; x < n; ++x) {
