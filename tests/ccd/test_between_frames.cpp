@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <memory>
 
 namespace collidescope {
 namespace {
@@ -197,11 +198,13 @@ TEST(BetweenFrames, BadIntervalsAreOneLineErrors) {
 // either frame, NaN, infinity or above 1e100), and the default tolerance from both frames' box.
 TEST(BetweenFrames, UnfitCoordinatesAreNamedAndTheToleranceSpansBothFrames) {
     const MeshData sheet = grid_sheet(2, 1.0);  // [0, 1] x [0, 1] in z = 0
-    const auto error_of = [&](std::size_t frame, std::size_t vertex, double value) {
+    // Vertex `vertex`'s coordinate `axis` set to `value` in one frame, after the source (which
+    // would refuse it: the engine's own check is tested here). Nine vertices: the scan reads
+    // them in pairs, and vertex 8 alone.
+    const auto error_of = [&](std::size_t frame, std::size_t vertex, int axis, double value) {
         auto [a, b] = interval({sheet, sheet}, {sheet, sheet});
-        // Set past the source, which would refuse it (the engine's own check is tested here).
         std::vector<Vec3> changed = sheet.vertices;
-        changed[vertex].y() = value;
+        changed[vertex][axis] = value;
         (frame == 0 ? a : b).objects[1].vertices = std::move(changed);
         try {
             BetweenFrames().detect(a, b);
@@ -210,12 +213,28 @@ TEST(BetweenFrames, UnfitCoordinatesAreNamedAndTheToleranceSpansBothFrames) {
         }
         return std::string("no error");
     };
-    EXPECT_EQ(error_of(1, 2, std::nan("")),
-              "frame 1, object 1: vertex 2 is not finite (between-frames detection needs finite coordinates)");
-    EXPECT_EQ(error_of(0, 4, -std::numeric_limits<double>::infinity()),
-              "frame 0, object 1: vertex 4 is not finite (between-frames detection needs finite coordinates)");
-    EXPECT_EQ(error_of(1, 0, 2e100), "frame 1, object 1: vertex 0 has a coordinate above 1e100 (between-frames detection's limit)");
-    EXPECT_EQ(error_of(0, 3, 1e100), "no error");
+    ASSERT_EQ(sheet.vertices.size(), 9u);
+    const std::string not_finite = " is not finite (between-frames detection needs finite coordinates)";
+    const std::string too_large = " has a coordinate above 1e100 (between-frames detection's limit)";
+    EXPECT_EQ(error_of(1, 2, 1, std::nan("")), "frame 1, object 1: vertex 2" + not_finite);
+    EXPECT_EQ(error_of(0, 4, 0, -std::numeric_limits<double>::infinity()), "frame 0, object 1: vertex 4" + not_finite);
+    EXPECT_EQ(error_of(1, 8, 2, std::nan("")), "frame 1, object 1: vertex 8" + not_finite);
+    EXPECT_EQ(error_of(0, 8, 0, std::numeric_limits<double>::infinity()), "frame 0, object 1: vertex 8" + not_finite);
+    EXPECT_EQ(error_of(1, 5, 2, std::numeric_limits<double>::infinity()), "frame 1, object 1: vertex 5" + not_finite);
+    EXPECT_EQ(error_of(1, 0, 1, 2e100), "frame 1, object 1: vertex 0" + too_large);
+    EXPECT_EQ(error_of(0, 7, 2, -3e100), "frame 0, object 1: vertex 7" + too_large);
+    EXPECT_EQ(error_of(1, 8, 1, -2e100), "frame 1, object 1: vertex 8" + too_large);
+    EXPECT_EQ(error_of(0, 3, 1, 1e100), "no error");
+    EXPECT_EQ(error_of(1, 8, 0, -1e100), "no error");
+
+    // An object without vertices or triangles (no source makes one; a frame built by hand
+    // may hold one) is read past.
+    {
+        auto [a, b] = interval({sheet, sheet}, {sheet, sheet});
+        const auto nothing = std::make_shared<const Topology>();
+        for (Frame* frame : {&a, &b}) frame->objects[1] = ObjectFrame{nothing, std::vector<Vec3>{}};
+        EXPECT_TRUE(BetweenFrames().detect(a, b).contacts.empty());
+    }
 
     // The box of both frames: the sheet at z = 0, then moved up by 4 (extent 4 along z).
     const auto [from, to] = interval({sheet}, {translated(sheet, {0, 0, 4})});

@@ -58,10 +58,9 @@ bool shares_vertices(const Topology& topology) {
 // ends): built on the end positions for a new topology, then refit; rebuilt when the refit has
 // made it more than twice as costly as at its best since its build (the motion's own growth
 // of the boxes is in both). With `self` on a surface, the tree also carries the patches of
-// self-collision culling and their sides over the interval. With `wide` (the object may be
-// walked against another), its wide layout is fitted too.
+// self-collision culling and their sides over the interval.
 void fit_swept(SweptTree& swept, const Topology& topology, std::span<const Vec3> from, std::span<const Vec3> to,
-               bool self, bool wide) {
+               bool self) {
     Tree& tree = swept.tree;
     const auto build = [&] {
         bvh::BuildConfig config;
@@ -95,7 +94,6 @@ void fit_swept(SweptTree& swept, const Topology& topology, std::span<const Vec3>
     } else {
         swept.sides.clear();
     }
-    if (wide) bvh::fit_wide(tree);
 }
 
 // A unit of the walk: node a of object x against node b of object y, or (self) below one node;
@@ -243,8 +241,22 @@ IntervalResult BetweenFrames::detect(const Frame& from, const Frame& to) {
     Stopwatch broad;
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
         fit_swept(m_state->trees[i], *from.objects[i].topology, from.objects[i].vertices.span(),
-                  to.objects[i].vertices.span(), m_options.self_collision, n > 1);
+                  to.objects[i].vertices.span(), m_options.self_collision);
     });
+    // The wide layouts of the objects walked against another (the swept refit does not keep
+    // one fitted on the way: a pass of its own, only where the walk will use it).
+    std::vector<std::uint32_t> paired;
+    for (std::uint32_t x = 0; x < n; ++x) {
+        const Tree& tx = m_state->trees[x].tree;
+        for (std::uint32_t y = 0; y < n && !tx.empty(); ++y) {
+            const Tree& ty = m_state->trees[y].tree;
+            if (y != x && !ty.empty() && bvh::overlaps(tx.nodes[0].box, ty.nodes[0].box)) {
+                paired.push_back(x);
+                break;
+            }
+        }
+    }
+    tbb::parallel_for(std::size_t{0}, paired.size(), [&](std::size_t k) { bvh::fit_wide(m_state->trees[paired[k]].tree); });
     stats.broad_ms = broad.elapsed_ms();
     const Stopwatch narrow;
     std::vector<const SweptTree*> trees;

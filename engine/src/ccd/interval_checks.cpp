@@ -27,7 +27,7 @@ struct Scan {
 
 using Doubles = double __attribute__((vector_size(16)));
 
-Doubles load(const double* p) {
+Doubles load(const unsigned char* p) {
     Doubles v;
     std::memcpy(&v, p, sizeof v);
     return v;
@@ -48,12 +48,14 @@ Scan scan(const Frame& frame) {
     static_assert(sizeof(Vec3) == 3 * sizeof(double));
     for (const ObjectFrame& object : frame.objects) {
         const auto vertices = object.vertices.span();
-        const double* p = vertices.data()->data();  // Vec3 is three packed doubles
-        const double* const end = p + 6 * (vertices.size() / 2);
-        for (; p != end; p += 6) {
-            take(load(p), lo0, hi0, poison0);
-            take(load(p + 2), lo1, hi1, poison1);
-            take(load(p + 4), lo2, hi2, poison2);
+        if (vertices.empty()) continue;
+        // Vec3 is three packed doubles: two vertices are 48 bytes, read as three pairs.
+        const auto* bytes = reinterpret_cast<const unsigned char*>(vertices.data());
+        const std::size_t pairs = vertices.size() / 2;
+        for (std::size_t i = 0; i < pairs; ++i, bytes += 2 * sizeof(Vec3)) {
+            take(load(bytes), lo0, hi0, poison0);
+            take(load(bytes + 16), lo1, hi1, poison1);
+            take(load(bytes + 32), lo2, hi2, poison2);
         }
         if (vertices.size() % 2 != 0) {  // the last vertex, in both lanes
             const Vec3& last = vertices.back();
@@ -100,7 +102,8 @@ double tolerance_of(const Scan& first, const Scan& second, double requested) {
         const double lo = std::min(first.lo[k], second.lo[k]), hi = std::max(first.hi[k], second.hi[k]);
         if (lo <= hi) extent = std::max(extent, hi - lo);  // no vertex: lo = inf, hi = -inf
     }
-    return 1e-6 * (extent > 0 ? extent : 1.0);
+    // An infinite extent only where check_interval has not run (the peer's tolerance).
+    return 1e-6 * (extent > 0 && extent < std::numeric_limits<double>::infinity() ? extent : 1.0);
 }
 
 }  // namespace
