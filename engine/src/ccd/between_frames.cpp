@@ -23,6 +23,8 @@
 
 #include <algorithm>
 #include <span>
+#include <utility>
+#include <vector>
 
 namespace collidescope {
 namespace {
@@ -243,17 +245,24 @@ IntervalResult BetweenFrames::detect(const Frame& from, const Frame& to) {
         fit_swept(m_state->trees[i], *from.objects[i].topology, from.objects[i].vertices.span(),
                   to.objects[i].vertices.span(), m_options.self_collision);
     });
-    // The wide layouts of the objects walked against another (the swept refit does not keep
-    // one fitted on the way: a pass of its own, only where the walk will use it).
+    // The object pairs whose swept boxes meet, in order, and the wide layouts of their objects
+    // (the swept refit does not keep one fitted on the way: a pass of its own, only where the
+    // walk will use it).
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> meeting;
     std::vector<std::uint32_t> paired;
-    for (std::uint32_t x = 0; x < n; ++x) {
-        const Tree& tx = m_state->trees[x].tree;
-        for (std::uint32_t y = 0; y < n && !tx.empty(); ++y) {
-            const Tree& ty = m_state->trees[y].tree;
-            if (y != x && !ty.empty() && bvh::overlaps(tx.nodes[0].box, ty.nodes[0].box)) {
-                paired.push_back(x);
-                break;
+    {
+        std::vector<bool> is_paired(n, false);
+        for (std::uint32_t x = 0; x < n; ++x) {
+            const Tree& tx = m_state->trees[x].tree;
+            for (std::uint32_t y = x + 1; y < n && !tx.empty(); ++y) {
+                const Tree& ty = m_state->trees[y].tree;
+                if (ty.empty() || !bvh::overlaps(tx.nodes[0].box, ty.nodes[0].box)) continue;
+                meeting.emplace_back(x, y);
+                is_paired[x] = is_paired[y] = true;
             }
+        }
+        for (std::uint32_t x = 0; x < n; ++x) {
+            if (is_paired[x]) paired.push_back(x);
         }
     }
     tbb::parallel_for(std::size_t{0}, paired.size(), [&](std::size_t k) { bvh::fit_wide(m_state->trees[paired[k]].tree); });
@@ -265,13 +274,14 @@ IntervalResult BetweenFrames::detect(const Frame& from, const Frame& to) {
     const Walk walk(from, to, trees, stats.tolerance, m_options.max_boxes);
     // The roots: every object pair whose swept boxes meet, and each object's own.
     std::vector<Item> items;
+    auto next_meeting = meeting.begin();
     for (std::uint32_t x = 0; x < n; ++x) {
         if (trees[x]->tree.empty()) continue;
         if (m_options.self_collision) items.push_back({x, x, 0, 0, true});
-        for (std::uint32_t y = x + 1; y < n; ++y) {
+        for (; next_meeting != meeting.end() && next_meeting->first == x; ++next_meeting) {
+            const std::uint32_t y = next_meeting->second;
             const Tree& tx = trees[x]->tree;
             const Tree& ty = trees[y]->tree;
-            if (ty.empty() || !bvh::overlaps(tx.nodes[0].box, ty.nodes[0].box)) continue;
             if (bvh::wide_fitted(tx) && bvh::wide_fitted(ty)) {
                 items.push_back({x, y, bvh::wide_root(tx), bvh::wide_root(ty), false, true});
             } else {
