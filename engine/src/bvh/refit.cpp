@@ -74,18 +74,20 @@ struct Bounds {
 };
 
 // Writes a binary node's new box, rounded outward, into the wide slot that names it (the
-// wide layout, kept fitted on the way: wide_tree.hpp).
-void write_wide_slot(WideTree& wide, std::uint32_t node, const Bounds& bounds) {
+// wide layout, kept fitted on the way: wide_tree.hpp); for a leaf (its first slot
+// `leaf_first`), into WideTree::leaf_box_at too.
+void write_wide_slot(WideTree& wide, std::uint32_t node, const Bounds& bounds, std::uint32_t leaf_first = ~0u) {
     const std::uint32_t at = wide.slot_of[node];
     if (at == ~0u) return;
     WideNode& target = wide.nodes[at >> 2];
     const std::uint32_t slot = at & 3u;
-    target.lo[0][slot] = round_down(bounds.lo_xy[0]);
-    target.lo[1][slot] = round_down(bounds.lo_xy[1]);
-    target.lo[2][slot] = round_down(bounds.lo_z);
-    target.hi[0][slot] = round_up(bounds.hi_xy[0]);
-    target.hi[1][slot] = round_up(bounds.hi_xy[1]);
-    target.hi[2][slot] = round_up(bounds.hi_z);
+    const FloatBox rounded{{round_down(bounds.lo_xy[0]), round_down(bounds.lo_xy[1]), round_down(bounds.lo_z)},
+                           {round_up(bounds.hi_xy[0]), round_up(bounds.hi_xy[1]), round_up(bounds.hi_z)}};
+    for (int k = 0; k < 3; ++k) {
+        target.lo[k][slot] = rounded.lo[k];
+        target.hi[k][slot] = rounded.hi[k];
+    }
+    if (leaf_first != ~0u) wide.leaf_box_at[leaf_first] = rounded;
 }
 
 // Fits an inner node from its children (already fitted), with one store, and returns its
@@ -147,7 +149,7 @@ double fit_subtree(Tree& tree, const RefitSubtree& subtree, std::span<const Vec3
                 sides[*leaf] = leaf_sides;
                 leaf_sides = 0x3f;
             }
-            if (wide != nullptr) write_wide_slot(*wide, *leaf, bounds);
+            if (wide != nullptr) write_wide_slot(*wide, *leaf, bounds, k + 1 - count);
             bounds.store(nodes[*leaf++].box);
             cost += bounds.half_area() * count;
             bounds = Bounds::empty();

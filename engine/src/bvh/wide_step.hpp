@@ -27,15 +27,11 @@ inline Floats load(const std::array<float, 4>& lanes) {
 
 inline Floats splat(float x) { return Floats{x, x, x, x}; }
 
-/// A box in single precision, rounded outward from its double box.
-struct FloatBox {
-    float lo[3];
-    float hi[3];
-};
-
-/// A leaf entry's float box, rounded outward from the union of its triangles' double boxes.
+/// A leaf entry's float box, rounded outward from the union of its triangles' double boxes:
+/// as its wide slot holds it (WideTree::leaf_box_at), computed only for a root leaf.
 inline FloatBox leaf_box(const Tree& tree, std::uint32_t entry) {
     const std::uint32_t first = wide_leaf_first(entry), end = first + wide_leaf_count(entry);
+    if (!tree.wide.nodes.empty()) [[likely]] return tree.wide.leaf_box_at[first];
     Aabb box = tree.leaf_boxes[first];
     for (std::uint32_t t = first + 1; t < end; ++t) box.grow(tree.leaf_boxes[t]);
     return {{round_down(box.lo[0]), round_down(box.lo[1]), round_down(box.lo[2])},

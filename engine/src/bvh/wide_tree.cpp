@@ -85,9 +85,10 @@ void fit_node(const Tree& tree, WideTree& wide, std::size_t w) {
             const std::uint32_t first = wide_leaf_first(child), end = first + wide_leaf_count(child);
             Aabb box = tree.leaf_boxes[first];
             for (std::uint32_t t = first + 1; t < end; ++t) box.grow(tree.leaf_boxes[t]);
+            FloatBox& rounded = wide.leaf_box_at[first];
             for (int k = 0; k < 3; ++k) {
-                node.lo[k][s] = round_down(box.lo[k]);
-                node.hi[k][s] = round_up(box.hi[k]);
+                node.lo[k][s] = rounded.lo[k] = round_down(box.lo[k]);
+                node.hi[k][s] = rounded.hi[k] = round_up(box.hi[k]);
             }
         } else {
             const WideNode& below = wide.nodes[child];
@@ -124,6 +125,7 @@ void prepare_wide(Tree& tree) {
     } else {
         wide.usable = collapse(tree, wide);
     }
+    wide.leaf_box_at.resize(wide.usable ? tree.leaf_boxes.size() : 0);
 }
 
 void fit_wide(Tree& tree) {
