@@ -2,7 +2,8 @@
 // part a pair that touches, at any scale the engine accepts and beyond: random pairs that the
 // exact per-frame test finds intersecting, held still, are each reported (seeds printed). A
 // review found the fixed directions' dot products overflowing at coordinates of 1e77 and their
-// bound underflowing at 1e-161, each parting pairs that intersect.
+// bound underflowing at 1e-161, each parting pairs that intersect. Pairs ahead on one axis at
+// both ends are parted first, and one that changes sides is not.
 
 #include "ccd/pair_motion.hpp"
 #include "support/sweep_size.hpp"
@@ -11,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <random>
 
@@ -137,6 +139,99 @@ TEST(PairMotion, AGrazingPairThatTheDirectionsAtTheEndPartIsNotReported) {
     const PairOutcome outcome = test_pair(m, 0.05, 10000);
     EXPECT_FALSE(outcome.contact) << "toi " << outcome.toi;
     EXPECT_GT(outcome.queries, 0u);  // the queries ran (and accepted it within δ)
+}
+
+// Two triangles flying side by side in one direction, the same one ahead along x at both ends:
+// their swept boxes overlap (each sweeps through the other's), yet they never meet, and the
+// first filter parts them before any query runs. Then random motions, some passing each other:
+// wherever the filter says apart, the obvious check agrees (at 257 times across the interval,
+// one axis with the triangles' ranges apart at every one of them). Seeds printed.
+TEST(PairMotion, APairAheadOnOneAxisAtBothEndsIsPartedBeforeItsQueries) {
+    for (const std::uint64_t seed : testing::sweep_of<std::uint64_t>({71, 72})) {
+        std::printf("[ seed     ] PairMotion side by side: seed %llu\n", static_cast<unsigned long long>(seed));
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> coordinate(-1, 1);
+        for (int n = 0; n < 2000; ++n) {
+            const Vec3 flight = Vec3(10 + 5 * coordinate(rng), coordinate(rng), coordinate(rng));  // past the gap of 2.5
+            PairMotion m;
+            m.ia = {0, 1, 2};
+            m.ib = {3, 4, 5};
+            for (int i = 0; i < 3; ++i) {
+                const Vec3 a(coordinate(rng), coordinate(rng), coordinate(rng));
+                const Vec3 b = Vec3(2.5, 0, 0) + Vec3(coordinate(rng), coordinate(rng), coordinate(rng));
+                m.a[i] = {a, a + flight + 0.2 * Vec3(coordinate(rng), coordinate(rng), coordinate(rng))};
+                m.b[i] = {b, b + flight + 0.2 * Vec3(coordinate(rng), coordinate(rng), coordinate(rng))};
+            }
+            ASSERT_TRUE(apart_on_an_axis(m)) << "seed " << seed << " pair " << n;
+            const PairOutcome outcome = test_pair(m, 1e-6, 10000);
+            ASSERT_FALSE(outcome.contact) << "seed " << seed << " pair " << n;
+            ASSERT_EQ(outcome.queries, 0u) << "seed " << seed << " pair " << n;
+        }
+        int apart = 0, not_apart = 0;
+        for (int n = 0; n < 4000; ++n) {
+            PairMotion m;
+            m.ia = {0, 1, 2};
+            m.ib = {3, 4, 5};
+            const Vec3 flight_a = 3 * Vec3(coordinate(rng), coordinate(rng), coordinate(rng));
+            const Vec3 flight_b = 3 * Vec3(coordinate(rng), coordinate(rng), coordinate(rng));
+            for (int i = 0; i < 3; ++i) {
+                const Vec3 a = 0.5 * Vec3(coordinate(rng), coordinate(rng), coordinate(rng));
+                const Vec3 b = Vec3(coordinate(rng), coordinate(rng), coordinate(rng)) + 0.5 * Vec3(coordinate(rng), coordinate(rng), coordinate(rng));
+                m.a[i] = {a, a + flight_a};
+                m.b[i] = {b, b + flight_b};
+            }
+            if (!apart_on_an_axis(m)) {
+                ++not_apart;
+                continue;
+            }
+            ++apart;
+            bool some_axis = false;
+            for (int k = 0; k < 3 && !some_axis; ++k) {
+                bool a_below = true, b_below = true;
+                for (int step = 0; step <= 256; ++step) {
+                    const double t = step / 256.0;
+                    double a_lo = 1e300, a_hi = -1e300, b_lo = 1e300, b_hi = -1e300;
+                    for (int i = 0; i < 3; ++i) {
+                        const double x = m.a[i][0][k] + t * (m.a[i][1][k] - m.a[i][0][k]);
+                        const double y = m.b[i][0][k] + t * (m.b[i][1][k] - m.b[i][0][k]);
+                        a_lo = std::min(a_lo, x), a_hi = std::max(a_hi, x), b_lo = std::min(b_lo, y), b_hi = std::max(b_hi, y);
+                    }
+                    a_below = a_below && a_hi < b_lo;
+                    b_below = b_below && b_hi < a_lo;
+                }
+                some_axis = a_below || b_below;
+            }
+            ASSERT_TRUE(some_axis) << "seed " << seed << " pair " << n;
+        }
+        std::printf("%d random pairs apart on an axis, %d not\n", apart, not_apart);
+        EXPECT_GT(apart, 200);
+        EXPECT_GT(not_apart, 200);
+    }
+}
+
+// The same gap along x at both ends, but on opposite sides: the small upright triangle passes
+// through the flat one between the frames, and is reported (a filter that ignored which side
+// is ahead would part it).
+TEST(PairMotion, APairThatChangesSidesOnAnAxisIsStillTested) {
+    PairMotion m;
+    m.ia = {0, 1, 2};
+    m.ib = {3, 4, 5};
+    const std::array<Vec3, 3> flat{Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(0, 1, 0)};
+    const std::array<Vec3, 3> upright{Vec3(0, 0, -0.5), Vec3(0.5, 0, 0.5), Vec3(0, 0.2, 0.5)};
+    for (int i = 0; i < 3; ++i) {
+        m.a[i] = {flat[i], flat[i]};
+        m.b[i] = {upright[i] + Vec3(2, 0, 0), upright[i] - Vec3(2.5, 0, 0)};
+    }
+    ASSERT_FALSE(triangles_intersect(flat[0], flat[1], flat[2], m.b[0][0], m.b[1][0], m.b[2][0]));
+    ASSERT_FALSE(triangles_intersect(flat[0], flat[1], flat[2], m.b[0][1], m.b[1][1], m.b[2][1]));
+    const PairOutcome outcome = test_pair(m, 1e-6, 10000);
+    EXPECT_TRUE(outcome.contact);
+    EXPECT_FALSE(outcome.start_contact);
+    EXPECT_FALSE(outcome.end_contact);
+    // The upright triangle's edge from (0, 0, -0.5) to (0, 0.2, 0.5) crosses the flat one's
+    // plane at (0, 0.1, 0) plus its offset 2 - 4.5 t along x, which reaches the flat one's edge
+    // x = 1 - (y + 1) / 2 (x = 0.45 at y = 0.1) first: at 2 - 4.5 t = 0.45.
+    EXPECT_NEAR(outcome.toi, 1.55 / 4.5, 1e-5);
 }
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include <bit>
 #include <cfloat>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <tuple>
 #include <utility>
@@ -139,23 +140,27 @@ bool witness(const Function& f, bool simplex, const Box& box, double tolerance) 
     return true;
 }
 
+// Two doubles side by side (the box's two times), for the corners below.
+using Pair = double __attribute__((vector_size(16)));
+
+inline Pair pair_min(Pair a, Pair b) { return a < b ? a : b; }
+inline Pair pair_max(Pair a, Pair b) { return a > b ? a : b; }
+
 // Axis k of F at the box's eight corners (index bits: 1 t, 2 u, 4 v) into `values`; returns
-// the least and the greatest.
+// the least and the greatest. Both times at once: each value is (x + u y) + v z, rounded as
+// the bound above assumes.
 std::pair<double, double> corner_values(const Function& f, int k, const Box& box, double* values) {
-    const double x[2] = {f.x0[k] + box.t0 * f.dx[k], f.x0[k] + box.t1 * f.dx[k]};
-    const double y[2] = {f.y0[k] + box.t0 * f.dy[k], f.y0[k] + box.t1 * f.dy[k]};
-    const double z[2] = {f.z0[k] + box.t0 * f.dz[k], f.z0[k] + box.t1 * f.dz[k]};
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (int corner = 0; corner < 8; ++corner) {
-        const int t = corner & 1;
-        const double u = corner & 2 ? box.u1 : box.u0;
-        const double v = corner & 4 ? box.v1 : box.v0;
-        const double w = (x[t] + u * y[t]) + v * z[t];
-        values[corner] = w;
-        lo = std::min(lo, w);
-        hi = std::max(hi, w);
-    }
-    return {lo, hi};
+    const Pair t{box.t0, box.t1};
+    const Pair x = f.x0[k] + t * f.dx[k], y = f.y0[k] + t * f.dy[k], z = f.z0[k] + t * f.dz[k];
+    const Pair w00 = (x + box.u0 * y) + box.v0 * z, w10 = (x + box.u1 * y) + box.v0 * z;
+    const Pair w01 = (x + box.u0 * y) + box.v1 * z, w11 = (x + box.u1 * y) + box.v1 * z;
+    std::memcpy(values, &w00, sizeof w00);
+    std::memcpy(values + 2, &w10, sizeof w10);
+    std::memcpy(values + 4, &w01, sizeof w01);
+    std::memcpy(values + 6, &w11, sizeof w11);
+    const Pair lo = pair_min(pair_min(w00, w10), pair_min(w01, w11));
+    const Pair hi = pair_max(pair_max(w00, w10), pair_max(w01, w11));
+    return {lo[0] < lo[1] ? lo[0] : lo[1], hi[0] > hi[1] ? hi[0] : hi[1]};
 }
 
 // Whether some axis of F is certainly non-zero over [ta, tb] x [0, 1]^2: the features apart
@@ -206,13 +211,15 @@ bool solve_span(const Function& f, bool simplex, const QueryConfig& config, doub
         }
         for (int i = 0; i < dirs.count && !excluded; ++i) {
             const Vec3& d = dirs.d[i];
-            double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-            for (int corner = 0; corner < 8; ++corner) {
-                const double w = d[0] * value[0][corner] + d[1] * value[1][corner] + d[2] * value[2][corner];
-                lo = std::min(lo, w);
-                hi = std::max(hi, w);
+            Pair lo = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}, hi = -lo;
+            for (int corner = 0; corner < 8; corner += 2) {
+                Pair v[3];
+                for (int k = 0; k < 3; ++k) std::memcpy(&v[k], &value[k][corner], sizeof v[k]);
+                const Pair w = d[0] * v[0] + d[1] * v[1] + d[2] * v[2];
+                lo = pair_min(lo, w);
+                hi = pair_max(hi, w);
             }
-            excluded = lo > dirs.error[i] || hi < -dirs.error[i];
+            excluded = std::min(lo[0], lo[1]) > dirs.error[i] || std::max(hi[0], hi[1]) < -dirs.error[i];
         }
         if (excluded) continue;
         if (within || witness(f, simplex, box, config.tolerance)) {

@@ -33,6 +33,11 @@ struct PairOutcome {
     std::uint64_t boxes = 0;     ///< boxes of their solutions (a stored one's counted again)
 };
 
+/// Whether the two triangles stay apart along a coordinate axis throughout the interval
+/// because the same one is below the other along it at both ends (exact: comparisons of the
+/// coordinates). test_pair's first filter; their swept boxes can still overlap.
+bool apart_on_an_axis(const PairMotion& motion);
+
 /// Whether the pair touches during the interval, and from when. Of one object (`self`),
 /// features that share a vertex index are not queried and the ends use the self rule. With
 /// `cache`, a query whose features recur across pairs (shares_a, shares_b) is taken from
