@@ -137,6 +137,9 @@ double fit_subtree(Tree& tree, const RefitSubtree& subtree, std::span<const Vec3
     for (std::uint32_t k = subtree.slot_begin; k < subtree.slot_end; ++k) {
         const TriIndices& ahead = tris[std::min(k + kPrefetchSlots, subtree.slot_end - 1)];
         for (const std::uint32_t v : ahead) __builtin_prefetch(vertices.data() + v);
+        if constexpr (kSwept) {
+            for (const std::uint32_t v : ahead) __builtin_prefetch(to + v);
+        }
         const Vec3 &a = vertices[tris[k][0]], &b = vertices[tris[k][1]], &c = vertices[tris[k][2]];
         Bounds triangle = Bounds::of(a, b, c);
         if constexpr (kSwept) triangle.grow(Bounds::of(to[tris[k][0]], to[tris[k][1]], to[tris[k][2]]));
