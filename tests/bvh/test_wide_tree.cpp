@@ -100,7 +100,16 @@ void expect_wide_layout_fits(const Tree& tree) {
                 continue;
             }
             ++children;
-            if (is_wide_leaf(child)) ++reached[wide_leaf_first(child)];
+            if (is_wide_leaf(child)) {
+                ++reached[wide_leaf_first(child)];
+                // The leaf's own float box, kept at its first slot, is the box its slot holds.
+                ASSERT_EQ(wide.leaf_box_at.size(), tree.leaf_boxes.size());
+                const FloatBox& kept = wide.leaf_box_at[wide_leaf_first(child)];
+                for (int k = 0; k < 3; ++k) {
+                    EXPECT_EQ(kept.lo[k], wide.nodes[w].lo[k][s]) << "wide " << w << " slot " << s;
+                    EXPECT_EQ(kept.hi[k], wide.nodes[w].hi[k][s]) << "wide " << w << " slot " << s;
+                }
+            }
             std::vector<std::uint32_t> leaves;
             leaves_below(leaves_below, child, leaves);
             for (const std::uint32_t leaf : leaves) {

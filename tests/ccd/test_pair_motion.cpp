@@ -192,8 +192,9 @@ TEST(PairMotion, APairAheadOnOneAxisAtBothEndsIsPartedBeforeItsQueries) {
                     const double t = step / 256.0;
                     double a_lo = 1e300, a_hi = -1e300, b_lo = 1e300, b_hi = -1e300;
                     for (int i = 0; i < 3; ++i) {
-                        const double x = m.a[i][0][k] + t * (m.a[i][1][k] - m.a[i][0][k]);
-                        const double y = m.b[i][0][k] + t * (m.b[i][1][k] - m.b[i][0][k]);
+                        // The ends exactly (the interpolation's rounding at t = 1 could move them).
+                        const double x = step == 256 ? m.a[i][1][k] : m.a[i][0][k] + t * (m.a[i][1][k] - m.a[i][0][k]);
+                        const double y = step == 256 ? m.b[i][1][k] : m.b[i][0][k] + t * (m.b[i][1][k] - m.b[i][0][k]);
                         a_lo = std::min(a_lo, x), a_hi = std::max(a_hi, x), b_lo = std::min(b_lo, y), b_hi = std::max(b_hi, y);
                     }
                     a_below = a_below && a_hi < b_lo;
@@ -232,6 +233,24 @@ TEST(PairMotion, APairThatChangesSidesOnAnAxisIsStillTested) {
     // plane at (0, 0.1, 0) plus its offset 2 - 4.5 t along x, which reaches the flat one's edge
     // x = 1 - (y + 1) / 2 (x = 0.45 at y = 0.1) first: at 2 - 4.5 t = 0.45.
     EXPECT_NEAR(outcome.toi, 1.55 / 4.5, 1e-5);
+}
+
+// Apart must be strict: a vertex of one triangle on the other's face, still, with the two
+// ranges along x meeting at that vertex's coordinate at both ends, is a contact.
+TEST(PairMotion, APairWhoseRangesMeetOnAnAxisAtBothEndsIsNotParted) {
+    PairMotion m;
+    m.ia = {0, 1, 2};
+    m.ib = {3, 4, 5};
+    const std::array<Vec3, 3> face{Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};  // in x = 0
+    const std::array<Vec3, 3> touching{Vec3(0, 0.2, 0.2), Vec3(1, 0.2, 0.2), Vec3(1, 0.5, 0.2)};
+    for (int i = 0; i < 3; ++i) {
+        m.a[i] = {face[i], face[i]};
+        m.b[i] = {touching[i], touching[i]};
+    }
+    EXPECT_FALSE(apart_on_an_axis(m));
+    const PairOutcome outcome = test_pair(m, 1e-6, 10000);
+    EXPECT_TRUE(outcome.contact);
+    EXPECT_TRUE(outcome.start_contact);
 }
 
 }  // namespace

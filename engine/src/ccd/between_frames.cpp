@@ -135,6 +135,7 @@ public:
                 [&](std::uint32_t first_a, std::uint32_t count_a, std::uint32_t first_b, std::uint32_t count_b) {
                     // The slot pairs whose boxes overlap first, then each tested while the
                     // next one's corners are asked for (a gather from four places in memory).
+                    static_assert(bvh::k_wide_max_leaf <= 8, "a leaf entry's count has three bits");
                     std::array<std::array<std::uint32_t, 2>, bvh::k_wide_max_leaf * bvh::k_wide_max_leaf> found;  // not zeroed
                     std::size_t count = 0;
                     for (std::uint32_t i = first_a; i < first_a + count_a; ++i) {

@@ -251,11 +251,11 @@ bool apart_on_an_axis(const PairMotion& m) {
 PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_boxes, QueryCache* cache) {
     PairOutcome out;
     if (m.self && std::is_permutation(m.ia.begin(), m.ia.end(), m.ib.begin())) return out;  // the same triangle
+    if (apart_on_an_axis(m)) return out;
     double largest = 0;
     for (int i = 0; i < 3; ++i) {
         for (int end = 0; end < 2; ++end) largest = std::max({largest, m.a[i][end].cwiseAbs().maxCoeff(), m.b[i][end].cwiseAbs().maxCoeff()});
     }
-    if (apart_on_an_axis(m)) return out;
     const bool sharing = m.self && (shares(m.ib, m.ia[0]) || shares(m.ib, m.ia[1]) || shares(m.ib, m.ia[2]));
     // In one plane the planes' sides are zero and the fixed directions seldom part a pair (on
     // dense coplanar contact they cost more than they saved): the planar queries decide. The
