@@ -227,6 +227,29 @@ TEST(BetweenFrames, UnfitCoordinatesAreNamedAndTheToleranceSpansBothFrames) {
     EXPECT_EQ(error_of(0, 3, 1, 1e100), "no error");
     EXPECT_EQ(error_of(1, 8, 0, -1e100), "no error");
 
+    // A frame large enough to be scanned in parallel runs (2^15 vertices a run): the unfit
+    // vertex found in any run, an odd one last, and the tolerance from every run's box.
+    {
+        const MeshData big = grid_sheet(300, 1.0, {0, 0, 10});  // 301 x 301 = 90,601 vertices, above the sheet
+        ASSERT_GT(big.vertices.size(), 2u << 15);
+        const auto big_error_of = [&](std::size_t vertex, double value) {
+            auto [a, b] = interval({sheet, big}, {sheet, big});
+            std::vector<Vec3> changed = big.vertices;
+            changed[vertex][2] = value;
+            b.objects[1].vertices = std::move(changed);
+            try {
+                return "tolerance " + std::to_string(BetweenFrames().detect(a, b).stats.tolerance);
+            } catch (const InputError& e) {
+                return std::string(e.what());
+            }
+        };
+        for (const std::size_t vertex : {std::size_t{5}, std::size_t{40000}, std::size_t{70001}, big.vertices.size() - 1}) {
+            EXPECT_EQ(big_error_of(vertex, std::nan("")), "frame 1, object 1: vertex " + std::to_string(vertex) + not_finite);
+            EXPECT_EQ(big_error_of(vertex, 1e101), "frame 1, object 1: vertex " + std::to_string(vertex) + too_large);
+            EXPECT_EQ(big_error_of(vertex, -4.0), "tolerance " + std::to_string(14e-6)) << vertex;  // z from -4 to 10
+        }
+    }
+
     // An object without vertices or triangles (no source makes one; a frame built by hand
     // may hold one) is read past.
     {
