@@ -106,6 +106,50 @@ TEST(BvhRefit, SweptBoxesAreTheUnionOfBothEndsBoxes) {
     }
 }
 
+// The build over swept boxes against the obvious way: a valid tree (structure, coverage,
+// every box the exact union of its triangles' boxes at both ends, checked by the validator
+// on each end and by hand), the same boxes a swept refit of it gives, and a quality
+// reference of 1 for that refit.
+TEST(BvhBuild, SweptBuildFitsEachBoxToBothEnds) {
+    for (const std::uint64_t seed : {10u, 11u, 12u}) {
+        std::mt19937_64 rng(seed);
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        const MeshData mesh = seed == 10 ? testing::crumpled_sheet(rng, 30, 1.0, true) : testing::grid_soup(rng, 5000, 20);
+        const std::vector<Vec3> from = jiggle(rng, mesh.vertices, 0.25, 2), to = jiggle(rng, mesh.vertices, 0.25, 4);
+        BuildConfig config;
+        config.refit_grain = 32;
+        Tree tree;
+        TreeBuilder builder;
+        const BuildStats built = seed == 12 ? builder.build_swept(mesh.triangles, from, to, config, tree)
+                                            : build_swept_tree(mesh.triangles, from, to, config, tree);
+        ValidateOptions loose;
+        loose.tight = false;  // each box also holds the other end
+        EXPECT_EQ(validate(tree, mesh.triangles, from, loose), std::vector<std::string>{});
+        EXPECT_EQ(validate(tree, mesh.triangles, to, loose), std::vector<std::string>{});
+        for (std::size_t k = 0; k < tree.leaf_boxes.size(); ++k) {
+            Aabb both = triangle_box(tree.leaf_triangles[k], from);
+            both.grow(triangle_box(tree.leaf_triangles[k], to));
+            ASSERT_EQ(tree.leaf_boxes[k], both) << "slot " << k;
+            ASSERT_EQ(tree.leaf_triangles[k], mesh.triangles[tree.triangle_ids[k]]) << "slot " << k;
+        }
+        const LargeVector<Node> nodes = tree.nodes;
+        for (std::size_t i = 0; i < nodes.size(); ++i) {
+            Aabb expected;
+            if (nodes[i].is_leaf()) {
+                for (std::uint32_t k = 0; k < nodes[i].count; ++k) expected.grow(tree.leaf_boxes[nodes[i].index + k]);
+            } else {
+                expected = nodes[i + 1].box;
+                expected.grow(nodes[nodes[i].index].box);
+            }
+            ASSERT_EQ(nodes[i].box, expected) << "node " << i;
+        }
+        EXPECT_DOUBLE_EQ(built.sah_cost, sah_cost(tree));
+        const RefitStats refit_again = refit_swept(tree, mesh.triangles, from, to);
+        for (std::size_t i = 0; i < nodes.size(); ++i) ASSERT_EQ(tree.nodes[i].box, nodes[i].box) << "node " << i;
+        EXPECT_DOUBLE_EQ(refit_again.quality, 1.0);
+    }
+}
+
 TEST(BvhTraverse, CandidatesAreExactlyTheOverlappingTriangleBoxes) {
     std::mt19937_64 rng(21);
     for (int round = 0; round < 6; ++round) {

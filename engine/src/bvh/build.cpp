@@ -19,14 +19,16 @@ namespace collidescope::bvh {
 namespace detail {
 
 void make_build_input(std::span<const TriIndices> triangles, std::span<const Vec3> vertices, bool with_boxes,
-                      BuildInput& input) {
+                      BuildInput& input, std::span<const Vec3> to) {
     input.boxes.resize(with_boxes ? triangles.size() : 0);
     input.centroids.resize(triangles.size());
+    const bool swept = !to.empty();
     input.centroid_bounds = tbb::parallel_reduce(
         tbb::blocked_range<std::size_t>(0, triangles.size(), 4096), Aabb{},
         [&](const tbb::blocked_range<std::size_t>& range, Aabb bounds) {
             for (std::size_t t = range.begin(); t != range.end(); ++t) {
-                const Aabb box = triangle_box(triangles, vertices, static_cast<std::uint32_t>(t));
+                Aabb box = triangle_box(triangles, vertices, static_cast<std::uint32_t>(t));
+                if (swept) box.grow(triangle_box(triangles, to, static_cast<std::uint32_t>(t)));
                 if (with_boxes) input.boxes[t] = box;
                 Vec3 c;
                 for (int k = 0; k < 3; ++k) c[k] = 0.5 * box.lo[k] + 0.5 * box.hi[k];
@@ -121,9 +123,13 @@ std::uint32_t depth_below(const Tree& tree, std::uint32_t node) {
 }
 
 // The build into `tree` (allocated afresh; its wide layout kept) with `scratch` (reused: a
-// rebuild through a TreeBuilder allocates no working memory).
+// rebuild through a TreeBuilder allocates no working memory). With `to` (not empty): over the
+// swept boxes from `vertices` to `to`, its boxes fitted to them as refit_swept fits them
+// (from the build's own boxes: the corners are read once), its wide layout left to fit_wide.
 BuildStats build_into(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
-                      const BuildConfig& config, Tree& tree, detail::BuildScratch& scratch) {
+                      const BuildConfig& config, Tree& tree, detail::BuildScratch& scratch,
+                      std::span<const Vec3> to = {}) {
+    const bool swept = !to.empty();
     const Stopwatch stopwatch;
     BuildStats stats;
     if (triangles.empty()) {
@@ -144,7 +150,7 @@ BuildStats build_into(std::span<const TriIndices> triangles, std::span<const Vec
         tree.fits = fits;
     }
     detail::BuildInput& input = scratch.input;
-    detail::make_build_input(triangles, vertices, config.builder == Builder::Sah, input);
+    detail::make_build_input(triangles, vertices, swept || config.builder == Builder::Sah, input, to);
     detail::RawTree& raw = scratch.raw;
     raw.nodes.resize(2 * std::size_t{n} - 1);
     raw.used = 1;
@@ -163,18 +169,23 @@ BuildStats build_into(std::span<const TriIndices> triangles, std::span<const Vec
         for (std::uint32_t k = r.begin(); k != r.end(); ++k) tree.leaf_triangles[k] = triangles[tree.triangle_ids[k]];
     });
     tree.leaf_boxes.resize(n);
+    if (swept) {
+        tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 8192), [&](const tbb::blocked_range<std::uint32_t>& r) {
+            for (std::uint32_t k = r.begin(); k != r.end(); ++k) tree.leaf_boxes[k] = input.boxes[tree.triangle_ids[k]];
+        });
+    }
     plan_refit(tree, std::max(config.refit_grain, 1u), tree.refit_plan);
     if (config.surface_patches) build_surface_patches(tree);
     // A tree whose wide layout was in use gets it again at once, fitted by the refit below on
     // the way (a separate fit after every rebuild cost a third of a rebuild).
-    const bool wide_in_use = tree.wide.usable && tree.wide.built_for == tree.builds &&
+    const bool wide_in_use = !swept && tree.wide.usable && tree.wide.built_for == tree.builds &&
                              tree.wide.fitted_for != ~std::uint64_t{0};
     ++tree.builds;
     if (wide_in_use) {
         prepare_wide(tree);
         if (tree.wide.usable) tree.wide.fitted_for = 0;  // lets refit write through (refit.cpp)
     }
-    const RefitStats fitted = refit(tree, triangles, vertices);
+    const RefitStats fitted = swept ? fit_to_leaf_boxes(tree) : refit(tree, triangles, vertices);
     tree.built_cost = fitted.sah_cost;
     stats.nodes = static_cast<std::uint32_t>(tree.nodes.size());
     stats.leaves = (stats.nodes + 1) / 2;
@@ -194,11 +205,27 @@ BuildStats build_tree(std::span<const TriIndices> triangles, std::span<const Vec
     return build_into(triangles, vertices, config, tree, scratch);
 }
 
+BuildStats build_swept_tree(std::span<const TriIndices> triangles, std::span<const Vec3> from,
+                            std::span<const Vec3> to, const BuildConfig& config, Tree& tree) {
+    detail::BuildScratch scratch;
+    return build_into(triangles, from, config, tree, scratch, to);
+}
+
 TreeBuilder::TreeBuilder() = default;
 TreeBuilder::~TreeBuilder() = default;
 
 BuildStats TreeBuilder::build(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
                               const BuildConfig& config, Tree& tree) {
+    return build_with(triangles, vertices, {}, config, tree);
+}
+
+BuildStats TreeBuilder::build_swept(std::span<const TriIndices> triangles, std::span<const Vec3> from,
+                                    std::span<const Vec3> to, const BuildConfig& config, Tree& tree) {
+    return build_with(triangles, from, to, config, tree);
+}
+
+BuildStats TreeBuilder::build_with(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
+                                   std::span<const Vec3> to, const BuildConfig& config, Tree& tree) {
     std::unique_ptr<detail::BuildScratch> scratch;
     {
         const std::lock_guard lock(m_mutex);
@@ -208,7 +235,7 @@ BuildStats TreeBuilder::build(std::span<const TriIndices> triangles, std::span<c
         }
     }
     if (!scratch) scratch = std::make_unique<detail::BuildScratch>();
-    const BuildStats stats = build_into(triangles, vertices, config, tree, *scratch);
+    const BuildStats stats = build_into(triangles, vertices, config, tree, *scratch, to);
     const std::lock_guard lock(m_mutex);
     m_idle.push_back(std::move(scratch));
     return stats;

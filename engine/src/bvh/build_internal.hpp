@@ -51,9 +51,10 @@ struct BuildScratch {
 
 /// Fills `input` with the triangles' centroids and their bounds, and their boxes too when
 /// `with_boxes` (the SAH builder bins them; the LBVH builder needs centroids only). Reuses
-/// `input`'s storage.
+/// `input`'s storage. With `to` (not empty), each triangle's box is its swept box: the box
+/// of its corners at `vertices` and at `to`.
 void make_build_input(std::span<const TriIndices> triangles, std::span<const Vec3> vertices, bool with_boxes,
-                      BuildInput& input);
+                      BuildInput& input, std::span<const Vec3> to = {});
 
 /// Top-down binned SAH build into `raw` (nodes sized 2n - 1, ids 0..n-1 on entry).
 void build_sah(const BuildInput& input, const BuildConfig& config, RawTree& raw);

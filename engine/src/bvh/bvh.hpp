@@ -197,6 +197,14 @@ struct BuildStats {
 BuildStats build_tree(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
                       const BuildConfig& config, Tree& tree);
 
+/// build_tree over the triangles' swept boxes between two positions of the mesh (each the
+/// box of the triangle's corners at `from` and at `to`, which holds it throughout a linear
+/// motion between them), for between-frames detection: the tree's boxes come out as
+/// refit_swept would fit them, from the build's own boxes (each corner read once, not again
+/// by a refit), and its quality reference is theirs. A wide layout goes stale (fit_wide).
+BuildStats build_swept_tree(std::span<const TriIndices> triangles, std::span<const Vec3> from,
+                            std::span<const Vec3> to, const BuildConfig& config, Tree& tree);
+
 namespace detail {
 struct BuildScratch;
 }
@@ -217,8 +225,14 @@ public:
     /// Same contract and result as build_tree.
     BuildStats build(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
                      const BuildConfig& config, Tree& tree);
+    /// Same contract and result as build_swept_tree.
+    BuildStats build_swept(std::span<const TriIndices> triangles, std::span<const Vec3> from,
+                           std::span<const Vec3> to, const BuildConfig& config, Tree& tree);
 
 private:
+    BuildStats build_with(std::span<const TriIndices> triangles, std::span<const Vec3> vertices,
+                          std::span<const Vec3> to, const BuildConfig& config, Tree& tree);
+
     std::mutex m_mutex;
     std::vector<std::unique_ptr<detail::BuildScratch>> m_idle;  ///< working memory not in use
 };
@@ -242,6 +256,12 @@ RefitStats refit(Tree& tree, std::span<const TriIndices> triangles, std::span<co
 /// and a wide layout goes stale. quality: against the cost of the last build's boxes.
 RefitStats refit_swept(Tree& tree, std::span<const TriIndices> triangles, std::span<const Vec3> from,
                        std::span<const Vec3> to);
+
+/// Fits the node boxes to Tree::leaf_boxes as they stand (each leaf the union of its slots'
+/// boxes, each inner node of its children's), as refit does after computing them; the
+/// patches' sides are left as they were, and a wide layout goes stale. quality: against the
+/// last build's cost.
+RefitStats fit_to_leaf_boxes(Tree& tree);
 
 /// The SAH cost of a tree: (sum over inner nodes of half_area + sum over leaves of
 /// half_area * count) / half_area(root); traversal and triangle costs both 1. A root of zero

@@ -99,8 +99,9 @@ private:
             }
             const Aabb box = triangle_box(m_triangles, m_vertices, tri);
             // The traversal's leaf tests read the stored box: it must be the triangle's own
-            // (a stale one could drop a pair), exactly.
-            if (k >= m_tree.leaf_boxes.size() || !(m_tree.leaf_boxes[k] == box)) {
+            // (a stale one could drop a pair), exactly; not tight (a swept tree): hold it.
+            if (k >= m_tree.leaf_boxes.size() ||
+                !(m_options.tight ? m_tree.leaf_boxes[k] == box : contains(m_tree.leaf_boxes[k], box))) {
                 fail("leaf_boxes[" + std::to_string(k) + "] is not the box of triangle " + std::to_string(tri));
             }
             fitted.grow(box);

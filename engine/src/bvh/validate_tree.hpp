@@ -13,7 +13,9 @@ namespace collidescope::bvh {
 struct ValidateOptions {
     std::uint32_t max_leaf_size = 4;  ///< leaves hold 1 .. max_leaf_size triangles
     /// Also require every box to be exactly the union of its children / its triangles (true
-    /// right after a build or refit on these vertices); containment is checked always.
+    /// right after a build or refit on these vertices), and each stored triangle box its
+    /// triangle's; containment is checked always (false: a swept tree, whose boxes also hold
+    /// the other end).
     bool tight = true;
 };
 

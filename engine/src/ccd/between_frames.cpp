@@ -1,6 +1,7 @@
 // Between-frames detection: each object's AABB tree (bvh/) fitted to its triangles' swept
 // boxes (the box of a triangle's corners at both ends, which holds the triangle at every time
-// between, as the motion is linear), kept from interval to interval and refit; the trees of
+// between, as the motion is linear), kept from interval to interval: refit, and built over
+// those boxes again once its refits have degraded it (fit_swept); the trees of
 // every object pair whose swept boxes meet are walked together (and each object's own, with
 // self-collision, skipping nodes whose triangles are proven embedded throughout the interval:
 // swept_patches.hpp), and each pair of triangles whose swept boxes overlap is tested
@@ -23,6 +24,7 @@
 
 #include <algorithm>
 #include <array>
+#include <memory>
 #include <span>
 #include <tuple>
 #include <utility>
@@ -38,6 +40,7 @@ struct SweptTree {
     std::uint64_t revision = 0;
     Tree tree;
     double built_quality = 0;  ///< the swept refit's best quality since the last build
+    bool rebuild_due = false;  ///< the last refit degraded the tree: build it at the next interval
     bool self = false;
     /// With self-collision on a surface (bvh::surface_like): the tree has patches, and per
     /// node the projected orientations kept throughout the interval (swept_node_sides).
@@ -45,6 +48,9 @@ struct SweptTree {
     std::vector<std::uint8_t> sides;
     /// Some vertex lies in two triangles (not a soup): its queries recur across pairs.
     bool shares_vertices = false;
+    /// The builds' working memory, kept for the next (first touches of fresh memory were
+    /// most of a build's time: bvh.hpp, TreeBuilder).
+    std::unique_ptr<bvh::TreeBuilder> builder = std::make_unique<bvh::TreeBuilder>();
 };
 
 bool shares_vertices(const Topology& topology) {
@@ -59,40 +65,44 @@ bool shares_vertices(const Topology& topology) {
 }
 
 // Fits `swept` to the triangles' boxes over the interval (each the box of its corners at both
-// ends): built on the end positions for a new topology, then refit; rebuilt when the refit has
-// made it more than twice as costly as at its best since its build (the motion's own growth
-// of the boxes is in both). With `self` on a surface, the tree also carries the patches of
+// ends): built over them for a new topology, then refit; built over them again at the next
+// interval once a refit has made it more than k_rebuild_plain (k_rebuild_patched) times as
+// costly as at its best since its build (the motion's own growth of the boxes is in both). A
+// build reads each corner once, as the refit it replaces does, so it costs little more (the
+// sort): on the flying soups a tree kept until twice as costly walked 1.5 times the node
+// pairs of a fresh one. A tree with patches (self-collision on a surface) costs more to build
+// and its walk skips the embedded patches: on the cloth family a lower threshold cost more
+// than it saved. With `self` on a surface, the tree also carries the patches of
 // self-collision culling and their sides over the interval.
 void fit_swept(SweptTree& swept, const Topology& topology, std::span<const Vec3> from, std::span<const Vec3> to,
                bool self) {
+    constexpr double k_rebuild_plain = 1.5, k_rebuild_patched = 2.0;
     Tree& tree = swept.tree;
-    const auto build = [&] {
-        bvh::BuildConfig config;
-        config.surface_patches = swept.patched;
-        bvh::build_tree(topology.triangles, to, config, tree);
-    };
-    bool built = false;
+    bool build = swept.rebuild_due;
     if (swept.revision != topology.revision || topology.revision == 0 || tree.empty() || swept.self != self) {
         swept.self = self;
         swept.patched = self && bvh::surface_like(topology.triangles);  // O(n log n): once per topology
         swept.shares_vertices = shares_vertices(topology);
-        build();
         swept.revision = topology.revision;
-        built = true;
+        build = true;
+    }
+    if (build) {
+        bvh::BuildConfig config;
+        config.surface_patches = swept.patched;
+        swept.builder->build_swept(topology.triangles, from, to, config, tree);
+        swept.built_quality = 1.0;
+        swept.rebuild_due = false;
+    } else if (!tree.empty()) {
+        const bvh::RefitStats fitted = bvh::refit_swept(tree, topology.triangles, from, to);
+        // The reference: the best since the build (one built in a fast interval, whose swept
+        // boxes are large, would otherwise set it too high for the slower ones after it).
+        swept.built_quality = std::min(swept.built_quality, fitted.quality);
+        swept.rebuild_due = fitted.quality > (swept.patched ? k_rebuild_patched : k_rebuild_plain) * swept.built_quality;
     }
     if (tree.empty()) {
         swept.sides.clear();
         return;
     }
-    bvh::RefitStats fitted = bvh::refit_swept(tree, topology.triangles, from, to);
-    if (!built && fitted.quality > 2 * swept.built_quality) {  // degraded: rebuild
-        build();
-        fitted = bvh::refit_swept(tree, topology.triangles, from, to);
-        built = true;
-    }
-    // The reference: the best since the build (one built in a fast interval, whose swept boxes
-    // are large, would otherwise set it too high for the slower ones after it).
-    swept.built_quality = built ? fitted.quality : std::min(swept.built_quality, fitted.quality);
     if (swept.patched && !tree.patches.empty()) {
         ccd::swept_node_sides(tree, from, to, swept.sides);
     } else {
@@ -307,7 +317,7 @@ IntervalResult BetweenFrames::detect(const Frame& from, const Frame& to) {
     });
     // The object pairs whose swept boxes meet, in order, and the wide layouts of their objects
     // (the swept refit does not keep one fitted on the way: a pass of its own, only where the
-    // walk will use it).
+    // walk will use it; on the way, it made the refit slower than both: bvh/refit.cpp).
     std::vector<std::pair<std::uint32_t, std::uint32_t>> meeting;
     std::vector<std::uint32_t> paired;
     {
