@@ -107,21 +107,34 @@ TEST(BvhRefit, SweptBoxesAreTheUnionOfBothEndsBoxes) {
 }
 
 // The build over swept boxes against the obvious way: a valid tree (structure, coverage,
-// every box the exact union of its triangles' boxes at both ends, checked by the validator
-// on each end and by hand), the same boxes a swept refit of it gives, and a quality
-// reference of 1 for that refit.
+// every box holding its triangles at both ends, checked by the validator on each end, and
+// exactly the union of their boxes at both ends, by hand), the same boxes a swept refit of it
+// gives, and a quality reference of 1 for that refit; for both builders, a tree with patches,
+// a root that is a leaf, and a wide layout in use (left stale for fit_wide).
 TEST(BvhBuild, SweptBuildFitsEachBoxToBothEnds) {
-    for (const std::uint64_t seed : {10u, 11u, 12u}) {
+    for (const std::uint64_t seed : {10u, 11u, 12u, 13u, 14u}) {
         std::mt19937_64 rng(seed);
         SCOPED_TRACE("seed " + std::to_string(seed));
-        const MeshData mesh = seed == 10 ? testing::crumpled_sheet(rng, 30, 1.0, true) : testing::grid_soup(rng, 5000, 20);
+        const MeshData mesh = seed == 10   ? testing::crumpled_sheet(rng, 30, 1.0, true)
+                              : seed == 13 ? testing::grid_soup(rng, 3, 2)  // one leaf
+                                           : testing::grid_soup(rng, 5000, 20);
         const std::vector<Vec3> from = jiggle(rng, mesh.vertices, 0.25, 2), to = jiggle(rng, mesh.vertices, 0.25, 4);
         BuildConfig config;
         config.refit_grain = 32;
+        config.builder = seed == 11 ? Builder::Sah : Builder::Lbvh;
+        config.surface_patches = seed == 10;
         Tree tree;
         TreeBuilder builder;
+        if (seed == 14) {  // a layout in use before the build
+            build_swept_tree(mesh.triangles, to, from, config, tree);
+            fit_wide(tree);
+            ASSERT_TRUE(wide_fitted(tree));
+        }
         const BuildStats built = seed == 12 ? builder.build_swept(mesh.triangles, from, to, config, tree)
                                             : build_swept_tree(mesh.triangles, from, to, config, tree);
+        EXPECT_FALSE(wide_fitted(tree));
+        EXPECT_EQ(tree.patches.empty(), seed != 10);
+        EXPECT_EQ(tree.nodes.size() == 1, seed == 13);
         ValidateOptions loose;
         loose.tight = false;  // each box also holds the other end
         EXPECT_EQ(validate(tree, mesh.triangles, from, loose), std::vector<std::string>{});
@@ -147,6 +160,10 @@ TEST(BvhBuild, SweptBuildFitsEachBoxToBothEnds) {
         const RefitStats refit_again = refit_swept(tree, mesh.triangles, from, to);
         for (std::size_t i = 0; i < nodes.size(); ++i) ASSERT_EQ(tree.nodes[i].box, nodes[i].box) << "node " << i;
         EXPECT_DOUBLE_EQ(refit_again.quality, 1.0);
+        if (seed == 14) {
+            fit_wide(tree);
+            EXPECT_TRUE(wide_fitted(tree));
+        }
     }
 }
 

@@ -18,6 +18,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <random>
 
 namespace collidescope {
 namespace {
@@ -266,6 +267,62 @@ TEST(BetweenFrames, UnfitCoordinatesAreNamedAndTheToleranceSpansBothFrames) {
     set.tolerance = 0.25;
     EXPECT_EQ(BetweenFrames(set).detect(from, to).stats.tolerance, 0.25);
     EXPECT_DOUBLE_EQ(between_frames_reference(from, to, {}).stats.tolerance, 4e-6);
+}
+
+// Two soups flying apart and through each other, each triangle along its own direction, so
+// that the swept trees degrade within a few intervals and are built again (the swept build,
+// at the interval after a refit passes its threshold): interval by interval, the reference's
+// pairs and pass-throughs, at one and two threads.
+TEST(BetweenFrames, EqualsTheReferenceAsFlyingSoupsAreBuiltAgain) {
+    constexpr std::uint64_t seed = 41;
+    std::printf("[ seed     ] BetweenFrames flying soups: seed %llu\n", static_cast<unsigned long long>(seed));
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const auto random_vector = [&] { return Vec3(unit(rng), unit(rng), unit(rng)); };
+    constexpr int k_triangles = 90, k_frames = 12;
+    // Per soup: each triangle's centre, corner offsets and velocity; the two soups start
+    // overlapping and fly out of a shared cube.
+    std::vector<std::vector<MeshData>> frames(k_frames);
+    for (int soup = 0; soup < 2; ++soup) {
+        std::vector<Vec3> centre, velocity;
+        std::vector<std::array<Vec3, 3>> corners;
+        for (int t = 0; t < k_triangles; ++t) {
+            centre.push_back(0.5 * random_vector() + Vec3(0.2 * soup, 0, 0));
+            velocity.push_back(0.3 * random_vector());
+            corners.push_back({0.08 * random_vector(), 0.08 * random_vector(), 0.08 * random_vector()});
+        }
+        for (int f = 0; f < k_frames; ++f) {
+            MeshData mesh;
+            for (int t = 0; t < k_triangles; ++t) {
+                for (const Vec3& corner : corners[t]) mesh.vertices.push_back(centre[t] + f * velocity[t] + corner);
+                const auto v = static_cast<std::uint32_t>(3 * t);
+                mesh.triangles.push_back({v, v + 1, v + 2});
+            }
+            frames[f].push_back(std::move(mesh));
+        }
+    }
+    auto source = make_memory_source({"soup0", "soup1"}, std::move(frames));
+    std::vector<Frame> all;
+    for (int f = 0; f < k_frames; ++f) all.push_back(source->frame(static_cast<std::uint32_t>(f)));
+    std::size_t contacts = 0;
+    for (const int threads : {1, 2}) {
+        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        BetweenFrames detector;
+        for (int f = 0; f + 1 < k_frames; ++f) {
+            const std::string what = "interval " + std::to_string(f) + " threads " + std::to_string(threads);
+            const auto fast = testing::contacts_by_pair(detector.detect(all[f], all[f + 1]));
+            const auto slow = testing::contacts_by_pair(between_frames_reference(all[f], all[f + 1], {}));
+            ASSERT_EQ(fast.size(), slow.size()) << what;
+            for (const auto& [pair, found] : fast) {
+                const auto it = slow.find(pair);
+                ASSERT_TRUE(it != slow.end()) << what << ": not in the reference " << pair.tri_a << " " << pair.tri_b;
+                EXPECT_EQ(found.pass_through, it->second.pass_through) << what;
+            }
+            contacts += fast.size();
+        }
+    }
+    std::printf("%zu contacts over the flying soups' intervals\n", contacts);
+    EXPECT_GT(contacts, 0u);
 }
 
 // Random scenes: the fast detector against the reference, interval by interval.

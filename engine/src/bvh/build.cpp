@@ -165,15 +165,13 @@ BuildStats build_into(std::span<const TriIndices> triangles, std::span<const Vec
     to_preorder(raw, tree.nodes, depth);
     tree.triangle_ids.swap(raw.ids);  // the fresh tree takes them; the next build allocates ids again
     tree.leaf_triangles.resize(n);
-    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 8192), [&](const tbb::blocked_range<std::uint32_t>& r) {
-        for (std::uint32_t k = r.begin(); k != r.end(); ++k) tree.leaf_triangles[k] = triangles[tree.triangle_ids[k]];
-    });
     tree.leaf_boxes.resize(n);
-    if (swept) {
-        tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 8192), [&](const tbb::blocked_range<std::uint32_t>& r) {
-            for (std::uint32_t k = r.begin(); k != r.end(); ++k) tree.leaf_boxes[k] = input.boxes[tree.triangle_ids[k]];
-        });
-    }
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 8192), [&](const tbb::blocked_range<std::uint32_t>& r) {
+        for (std::uint32_t k = r.begin(); k != r.end(); ++k) {
+            tree.leaf_triangles[k] = triangles[tree.triangle_ids[k]];
+            if (swept) tree.leaf_boxes[k] = input.boxes[tree.triangle_ids[k]];  // else the refit below
+        }
+    });
     plan_refit(tree, std::max(config.refit_grain, 1u), tree.refit_plan);
     if (config.surface_patches) build_surface_patches(tree);
     // A tree whose wide layout was in use gets it again at once, fitted by the refit below on

@@ -136,7 +136,8 @@ struct SurfacePatches {
     LargeVector<std::uint32_t> triangles;      ///< per node: triangles below it
     /// Per node, refreshed by refit: bit 2k set when every triangle below projects with
     /// positive orientation onto the plane that drops axis k, bit 2k + 1 when every one
-    /// projects with negative orientation.
+    /// projects with negative orientation. Zero (nothing known) on a swept tree, whose sides
+    /// over an interval are kept apart (ccd/swept_patches.hpp).
     LargeVector<std::uint8_t> sides;
 
     bool empty() const { return loop_size.empty(); }

@@ -102,7 +102,8 @@ private:
             // (a stale one could drop a pair), exactly; not tight (a swept tree): hold it.
             if (k >= m_tree.leaf_boxes.size() ||
                 !(m_options.tight ? m_tree.leaf_boxes[k] == box : contains(m_tree.leaf_boxes[k], box))) {
-                fail("leaf_boxes[" + std::to_string(k) + "] is not the box of triangle " + std::to_string(tri));
+                fail("leaf_boxes[" + std::to_string(k) + (m_options.tight ? "] is not" : "] does not hold") +
+                     " the box of triangle " + std::to_string(tri));
             }
             fitted.grow(box);
             if (!contains(node.box, box)) {

@@ -24,7 +24,6 @@
 
 #include <algorithm>
 #include <array>
-#include <memory>
 #include <span>
 #include <tuple>
 #include <utility>
@@ -48,9 +47,6 @@ struct SweptTree {
     std::vector<std::uint8_t> sides;
     /// Some vertex lies in two triangles (not a soup): its queries recur across pairs.
     bool shares_vertices = false;
-    /// The builds' working memory, kept for the next (first touches of fresh memory were
-    /// most of a build's time: bvh.hpp, TreeBuilder).
-    std::unique_ptr<bvh::TreeBuilder> builder = std::make_unique<bvh::TreeBuilder>();
 };
 
 bool shares_vertices(const Topology& topology) {
@@ -73,9 +69,11 @@ bool shares_vertices(const Topology& topology) {
 // pairs of a fresh one. A tree with patches (self-collision on a surface) costs more to build
 // and its walk skips the embedded patches: on the cloth family a lower threshold cost more
 // than it saved. With `self` on a surface, the tree also carries the patches of
-// self-collision culling and their sides over the interval.
+// self-collision culling and their sides over the interval. `builder` keeps the builds'
+// working memory for the next (first touches of fresh memory were most of a build's time:
+// bvh.hpp), one set per build running at once rather than per object.
 void fit_swept(SweptTree& swept, const Topology& topology, std::span<const Vec3> from, std::span<const Vec3> to,
-               bool self) {
+               bool self, bvh::TreeBuilder& builder) {
     constexpr double k_rebuild_plain = 1.5, k_rebuild_patched = 2.0;
     Tree& tree = swept.tree;
     bool build = swept.rebuild_due;
@@ -89,7 +87,7 @@ void fit_swept(SweptTree& swept, const Topology& topology, std::span<const Vec3>
     if (build) {
         bvh::BuildConfig config;
         config.surface_patches = swept.patched;
-        swept.builder->build_swept(topology.triangles, from, to, config, tree);
+        builder.build_swept(topology.triangles, from, to, config, tree);
         swept.built_quality = 1.0;
         swept.rebuild_due = false;
     } else if (!tree.empty()) {
@@ -294,6 +292,7 @@ private:
 
 struct BetweenFrames::State {
     std::vector<SweptTree> trees;
+    bvh::TreeBuilder builder;  ///< the swept trees' builds (thread-safe)
     tbb::enumerable_thread_specific<ccd::QueryCache> caches;  ///< each thread's query results
 };
 
@@ -313,7 +312,7 @@ IntervalResult BetweenFrames::detect(const Frame& from, const Frame& to) {
     Stopwatch broad;
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
         fit_swept(m_state->trees[i], *from.objects[i].topology, from.objects[i].vertices.span(),
-                  to.objects[i].vertices.span(), m_options.self_collision);
+                  to.objects[i].vertices.span(), m_options.self_collision, m_state->builder);
     });
     // The object pairs whose swept boxes meet, in order, and the wide layouts of their objects
     // (the swept refit does not keep one fitted on the way: a pass of its own, only where the

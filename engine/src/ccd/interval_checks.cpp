@@ -90,7 +90,7 @@ Scan scan_run(std::span<const Vec3> vertices) {
 }
 
 Scan scan(const Frame& frame) {
-    constexpr std::size_t k_run = 1 << 15;  // vertices a task (768 KiB)
+    constexpr std::size_t k_run = 1 << 15;  // the grain: about this many vertices (768 KiB) a task or more
     Scan s;
     for (const ObjectFrame& object : frame.objects) {
         const auto vertices = object.vertices.span();
