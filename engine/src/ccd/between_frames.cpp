@@ -65,7 +65,7 @@ bool shares_vertices(const Topology& topology) {
 // interval once a refit has made it more than k_rebuild_plain (k_rebuild_patched) times as
 // costly as at its best since its build (the motion's own growth of the boxes is in both). A
 // build reads each corner once, as the refit it replaces does, so it costs little more (the
-// sort): on the flying soups a tree kept until twice as costly walked 1.5 times the node
+// sort): on the flying soups a tree kept until twice as costly walked about twice the node
 // pairs of a fresh one. A tree with patches (self-collision on a surface) costs more to build
 // and its walk skips the embedded patches: on the cloth family a lower threshold cost more
 // than it saved. With `self` on a surface, the tree also carries the patches of
