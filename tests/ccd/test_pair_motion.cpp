@@ -3,7 +3,9 @@
 // exact per-frame test finds intersecting, held still, are each reported (seeds printed). A
 // review found the fixed directions' dot products overflowing at coordinates of 1e77 and their
 // bound underflowing at 1e-161, each parting pairs that intersect. Pairs ahead on one axis at
-// both ends are parted first, and one that changes sides is not.
+// both ends are parted first, and one that changes sides is not; so are pairs whose boxes
+// never meet during the interval (the overlap window), and a contact at the one instant they
+// meet is not.
 
 #include "ccd/pair_motion.hpp"
 #include "support/sweep_size.hpp"
@@ -18,6 +20,24 @@
 
 namespace collidescope::ccd {
 namespace {
+
+// The slow obvious case of an empty overlap window: along some axis, the same triangle lies
+// strictly below the other at both ends (comparisons of the coordinates, exact).
+bool apart_on_an_axis(const PairMotion& m) {
+    for (int k = 0; k < 3; ++k) {
+        bool a_below = true, b_below = true;
+        for (int end = 0; end < 2; ++end) {
+            const double a_lo = std::min({m.a[0][end][k], m.a[1][end][k], m.a[2][end][k]});
+            const double a_hi = std::max({m.a[0][end][k], m.a[1][end][k], m.a[2][end][k]});
+            const double b_lo = std::min({m.b[0][end][k], m.b[1][end][k], m.b[2][end][k]});
+            const double b_hi = std::max({m.b[0][end][k], m.b[1][end][k], m.b[2][end][k]});
+            a_below = a_below && a_hi < b_lo;
+            b_below = b_below && b_hi < a_lo;
+        }
+        if (a_below || b_below) return true;
+    }
+    return false;
+}
 
 // Triangles (p[0], p[1], p[2]) and (p[3], p[4], p[5]) of two objects, held still.
 PairMotion still_pair(const std::array<Vec3, 6>& p) {
@@ -163,6 +183,7 @@ TEST(PairMotion, APairAheadOnOneAxisAtBothEndsIsPartedBeforeItsQueries) {
                 m.b[i] = {b, b + flight + 0.2 * Vec3(coordinate(rng), coordinate(rng), coordinate(rng))};
             }
             ASSERT_TRUE(apart_on_an_axis(m)) << "seed " << seed << " pair " << n;
+            ASSERT_TRUE(overlap_window(m).empty()) << "seed " << seed << " pair " << n;
             const PairOutcome outcome = test_pair(m, 1e-6, 10000);
             ASSERT_FALSE(outcome.contact) << "seed " << seed << " pair " << n;
             ASSERT_EQ(outcome.queries, 0u) << "seed " << seed << " pair " << n;
@@ -248,9 +269,129 @@ TEST(PairMotion, APairWhoseRangesMeetOnAnAxisAtBothEndsIsNotParted) {
         m.b[i] = {touching[i], touching[i]};
     }
     EXPECT_FALSE(apart_on_an_axis(m));
+    EXPECT_FALSE(overlap_window(m).empty());
     const PairOutcome outcome = test_pair(m, 1e-6, 10000);
     EXPECT_TRUE(outcome.contact);
     EXPECT_TRUE(outcome.start_contact);
+}
+
+// The overlap window against the slow obvious answer: random pairs on integer coordinates, so
+// that every position at a time k / 1024 is exact, each triangle's box computed there; wherever
+// the two boxes meet (touching counts), the window holds the time. A pair apart on an axis has
+// an empty window, and the window is near the exact one of the interpolated bounds (computed
+// here the plain way), so it is no wider than it needs to be (seeds printed).
+TEST(PairMotion, TheOverlapWindowHoldsEveryTimeTheBoxesMeet) {
+    for (const std::uint64_t seed : testing::sweep_of<std::uint64_t>({81, 82})) {
+        std::printf("[ seed     ] PairMotion overlap window: seed %llu\n", static_cast<unsigned long long>(seed));
+        std::mt19937_64 rng(seed);
+        std::uniform_int_distribution<int> coordinate(-64, 64);
+        const auto point = [&] { return Vec3(coordinate(rng), coordinate(rng), coordinate(rng)); };
+        int empty = 0, narrowed = 0, met = 0;
+        const int pairs = testing::sweep_size(3000);
+        for (int n = 0; n < pairs; ++n) {
+            PairMotion m;
+            m.ia = {0, 1, 2};
+            m.ib = {3, 4, 5};
+            // A far offset on some pairs: the gaps are differences of large coordinates.
+            const Vec3 offset = n % 3 == 0 ? Vec3(1 << 24, -(1 << 24), 1 << 20) : Vec3::Zero();
+            const Vec3 flight_a = 2 * point(), flight_b = 2 * point();
+            for (int i = 0; i < 3; ++i) {
+                const Vec3 a = offset + 0.25 * point(), b = offset + point();
+                m.a[i] = {a, a + flight_a + 0.125 * point()};
+                m.b[i] = {b, b + flight_b + 0.125 * point()};
+            }
+            const OverlapWindow window = overlap_window(m);
+            if (apart_on_an_axis(m)) {
+                ASSERT_TRUE(window.empty()) << "seed " << seed << " pair " << n;
+            }
+            ASSERT_LE(0.0, window.lo);
+            ASSERT_LE(window.hi, 1.0);
+            bool any = false;
+            for (int step = 0; step <= 1024; ++step) {
+                const double t = step / 1024.0;
+                std::array<Vec3, 2> lo{Vec3::Constant(1e300), Vec3::Constant(1e300)}, hi{-lo[0], -lo[1]};
+                for (int i = 0; i < 3; ++i) {
+                    const Vec3 x = m.a[i][0] + t * (m.a[i][1] - m.a[i][0]), y = m.b[i][0] + t * (m.b[i][1] - m.b[i][0]);
+                    lo[0] = lo[0].cwiseMin(x), hi[0] = hi[0].cwiseMax(x), lo[1] = lo[1].cwiseMin(y), hi[1] = hi[1].cwiseMax(y);
+                }
+                if ((lo[0].array() <= hi[1].array()).all() && (lo[1].array() <= hi[0].array()).all()) {
+                    any = true;
+                    ASSERT_TRUE(window.lo <= t && t <= window.hi)
+                        << "seed " << seed << " pair " << n << ": the boxes meet at t = " << t << ", the window is ["
+                        << window.lo << ", " << window.hi << "]";
+                }
+            }
+            met += any;
+            // The exact window of the interpolated bounds, the plain way (differences of
+            // integers below 2^25 are exact; only the roots round).
+            double lo = 0, hi = 1;
+            for (int k = 0; k < 3; ++k) {
+                std::array<double, 2> a_lo, a_hi, b_lo, b_hi;
+                for (int end = 0; end < 2; ++end) {
+                    a_lo[end] = std::min({m.a[0][end][k], m.a[1][end][k], m.a[2][end][k]});
+                    a_hi[end] = std::max({m.a[0][end][k], m.a[1][end][k], m.a[2][end][k]});
+                    b_lo[end] = std::min({m.b[0][end][k], m.b[1][end][k], m.b[2][end][k]});
+                    b_hi[end] = std::max({m.b[0][end][k], m.b[1][end][k], m.b[2][end][k]});
+                }
+                for (const auto& [g0, g1] : {std::pair{a_hi[0] - b_lo[0], a_hi[1] - b_lo[1]}, std::pair{b_hi[0] - a_lo[0], b_hi[1] - a_lo[1]}}) {
+                    if (g0 < 0 && g1 < 0) lo = 2;
+                    if ((g0 < 0) != (g1 < 0)) (g0 < 0 ? lo : hi) = g0 < 0 ? std::max(lo, g0 / (g0 - g1)) : std::min(hi, g0 / (g0 - g1));
+                }
+            }
+            if (lo > hi) {
+                ASSERT_TRUE(window.empty()) << "seed " << seed << " pair " << n;
+                ++empty;
+            } else {
+                ASSERT_NEAR(window.lo, lo, 1e-12) << "seed " << seed << " pair " << n;
+                ASSERT_NEAR(window.hi, hi, 1e-12) << "seed " << seed << " pair " << n;
+                narrowed += hi - lo < 0.5;
+            }
+        }
+        std::printf("%d pairs: %d with an empty window, %d narrowed to under half, %d meeting at a sampled time\n", pairs, empty,
+                    narrowed, met);
+        EXPECT_GT(empty, pairs / 20);
+        EXPECT_GT(narrowed, pairs / 20);
+        EXPECT_GT(met, pairs / 20);
+    }
+}
+
+// Two triangles whose boxes meet at one instant only, where their corners meet: along x the
+// gap closes until t = 3/4, along y it opens from then on. The window is that instant, and
+// the contact there is reported, in a plane and out of it, near the origin and far from it.
+TEST(PairMotion, AContactAtTheOnlyInstantTheBoxesMeetIsReported) {
+    for (const double z_tilt : {0.0, 1.0}) {
+        for (const double offset : {0.0, 1e6, -3.0 * (1 << 30)}) {
+            SCOPED_TRACE("tilt " + std::to_string(z_tilt) + ", offset " + std::to_string(offset));
+            PairMotion m;
+            m.ia = {0, 1, 2};
+            m.ib = {3, 4, 5};
+            const Vec3 shift = Vec3::Constant(offset);
+            const std::array<Vec3, 3> still{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+            // At t = 3/4 the moving one's corner is at the origin, the rest at x <= 0, y <= 0.
+            const std::array<Vec3, 3> at_contact{Vec3(0, 0, 0), Vec3(-1, 0, z_tilt), Vec3(0, -1, z_tilt)};
+            const Vec3 velocity(-4, 4, 0);
+            for (int i = 0; i < 3; ++i) {
+                m.a[i] = {shift + still[i], shift + still[i]};
+                m.b[i] = {shift + at_contact[i] - 0.75 * velocity, shift + at_contact[i] + 0.25 * velocity};
+            }
+            const OverlapWindow window = overlap_window(m);
+            EXPECT_FALSE(window.empty());
+            EXPECT_LE(window.lo, 0.75);
+            EXPECT_GE(window.hi, 0.75);
+            EXPECT_NEAR(window.lo, 0.75, 1e-12);
+            EXPECT_NEAR(window.hi, 0.75, 1e-12);
+            const PairOutcome outcome = test_pair(m, 1e-6, 10000);
+            EXPECT_TRUE(outcome.contact);
+            EXPECT_FALSE(outcome.start_contact);
+            EXPECT_LE(outcome.toi, 0.75);
+            EXPECT_GT(outcome.toi, 0.75 - 1e-3);
+            // Moved on by one float step of the time's scale, the corners miss each other: the
+            // boxes never meet, and the pair is apart.
+            for (int i = 0; i < 3; ++i) m.b[i][0].y() -= 1e-3;
+            EXPECT_TRUE(overlap_window(m).empty());
+            EXPECT_FALSE(test_pair(m, 1e-6, 10000).contact);
+        }
+    }
 }
 
 }  // namespace

@@ -1,8 +1,9 @@
 // A pair over an interval: the exact test at t = 0; then each vertex of one triangle against
 // the other's face and each edge against each edge, every query first through the box of its
-// points at both ends (the motion is linear, so the features stay in the convex hull of
-// their positions at both ends: boxes apart, no contact), and each asked only for contacts
-// before the earliest found so far (and through the boxes up to that time).
+// points over the times the triangles' boxes can meet (the motion is linear, so the features
+// stay in the convex hull of their positions at those times' ends: boxes apart, no contact),
+// and each asked only for contacts before the earliest found so far (and through the boxes up
+// to that time).
 
 #include "ccd/pair_motion.hpp"
 
@@ -26,19 +27,32 @@ struct Bounds {
         lo = lo.cwiseMin(b.lo);
         hi = hi.cwiseMax(b.hi);
     }
-    // The positions of a linearly moving point over [0, until]: its box at both ends, and
-    // for until < 1 within that, the box of its start and its rounded position at `until`,
-    // widened by that rounding (fl(p0 + t fl(p1 - p0)) is within about 7u `largest` of exact
-    // for t in [0, 1], `largest` bounding every coordinate's magnitude; 16u largest covers it,
-    // 64 subnormals the products that underflow). Never larger than the whole interval's box,
-    // so a feature pair that box parts stays parted.
-    static Bounds of(const Path& path, double until, double largest) {
+    // The positions of a linearly moving point over [from, until] (within [0, 1]; empty when
+    // from > until): its box at both ends, and where the span is shorter, the box of its
+    // positions at the span's ends, each one computed (unless it is an end of the interval)
+    // and widened by its rounding (fl(p0 + t fl(p1 - p0)) is within about 7u `largest` of
+    // exact for t in [0, 1], `largest` bounding every coordinate's magnitude; 16u largest
+    // covers it, 64 subnormals the products that underflow). Never larger than the whole
+    // interval's box, so a feature pair that box parts stays parted.
+    static Bounds of(const Path& path, double from, double until, double largest) {
         const Bounds whole{path[0].cwiseMin(path[1]), path[0].cwiseMax(path[1])};
-        if (until >= 1) return whole;
-        const Vec3 at = path[0] + until * (path[1] - path[0]);
+        if (from <= 0 && until >= 1) [[likely]] return whole;
+        return of_span(path, whole, from, until, largest);
+    }
+    [[gnu::noinline]] static Bounds of_span(const Path& path, const Bounds& whole, double from, double until, double largest) {
+        if (from > until) return {};
         const double margin = 16 * std::numeric_limits<double>::epsilon() / 2 * largest + 64 * std::numeric_limits<double>::denorm_min();
-        return {whole.lo.cwiseMax(path[0].cwiseMin(at) - Vec3::Constant(margin)),
-                whole.hi.cwiseMin(path[0].cwiseMax(at) + Vec3::Constant(margin))};
+        Bounds span;
+        for (const double t : {from, until}) {
+            if (t <= 0 || t >= 1) {
+                const Vec3& end = path[t <= 0 ? 0 : 1];
+                span.grow({end, end});
+            } else {
+                const Vec3 at = path[0] + t * (path[1] - path[0]);
+                span.grow({at - Vec3::Constant(margin), at + Vec3::Constant(margin)});
+            }
+        }
+        return {whole.lo.cwiseMax(span.lo), whole.hi.cwiseMin(span.hi)};
     }
     bool overlaps(const Bounds& o) const { return (lo.array() <= o.hi.array()).all() && (o.lo.array() <= hi.array()).all(); }
 };
@@ -225,38 +239,60 @@ bool edges_clear(const Path& p0, const Path& p1, const Path& q0, const Path& q1,
 
 }  // namespace
 
-// Whether the two triangles are apart along a coordinate axis at both ends, the same one below
-// at both: each triangle's lowest coordinate along the axis is the minimum of linear functions
-// of t (concave), its highest the maximum (convex), so the gap between them is concave and,
-// positive at both ends, positive throughout. Comparisons of the input coordinates alone, so
-// exact. The swept boxes of such a pair can overlap (two triangles flying side by side in one
-// direction), and on the flying soups a third to three quarters of the candidates are such
-// pairs; the filters below part them too, at many times the cost.
-bool apart_on_an_axis(const PairMotion& m) {
+namespace {
+
+// A bound above an exact difference x - y of doubles from its rounded value d = fl(x - y):
+// |x - y - d| <= u |x - y| < 2u |d| (exact when d is 0 or subnormal), and adding 4u |d|
+// rounds by at most u of a value below 2 |d|: never below x - y.
+double above_difference(double d) { return d + std::abs(d) * 0x1p-51; }
+
+}  // namespace
+
+OverlapWindow overlap_window(const PairMotion& m) {
+    OverlapWindow window;
     for (int k = 0; k < 3; ++k) {
-        bool a_below = true, b_below = true;
+        std::array<double, 2> a_lo, a_hi, b_lo, b_hi;
         for (int end = 0; end < 2; ++end) {
-            const double a_lo = std::min({m.a[0][end][k], m.a[1][end][k], m.a[2][end][k]});
-            const double a_hi = std::max({m.a[0][end][k], m.a[1][end][k], m.a[2][end][k]});
-            const double b_lo = std::min({m.b[0][end][k], m.b[1][end][k], m.b[2][end][k]});
-            const double b_hi = std::max({m.b[0][end][k], m.b[1][end][k], m.b[2][end][k]});
-            a_below = a_below && a_hi < b_lo;
-            b_below = b_below && b_hi < a_lo;
+            a_lo[end] = std::min({m.a[0][end][k], m.a[1][end][k], m.a[2][end][k]});
+            a_hi[end] = std::max({m.a[0][end][k], m.a[1][end][k], m.a[2][end][k]});
+            b_lo[end] = std::min({m.b[0][end][k], m.b[1][end][k], m.b[2][end][k]});
+            b_hi[end] = std::max({m.b[0][end][k], m.b[1][end][k], m.b[2][end][k]});
         }
-        if (a_below || b_below) return true;
+        // The gap functions that must not be negative for the boxes to meet: A's top above
+        // B's bottom, and B's top above A's bottom. Each is at most the line through its upper
+        // bounds at the ends, h(t) = (1 - t) h0 + t h1, which is negative before or after
+        // its root t* (or throughout).
+        for (const auto& [top, bottom] : {std::pair{&a_hi, &b_lo}, std::pair{&b_hi, &a_lo}}) {
+            const double h0 = above_difference((*top)[0] - (*bottom)[0]);
+            const double h1 = above_difference((*top)[1] - (*bottom)[1]);
+            if (h0 >= 0 && h1 >= 0) continue;
+            if (h0 < 0 && h1 < 0) return {1, 0};
+            // t* = h0 / (h0 - h1), its quotient rounded within 3u of it (the sum and the
+            // division: both operands of the sum have one sign), moved past that by 2^-50 of
+            // itself and 2^-1000 (for quotients that underflow).
+            const double root = h0 < 0 ? -h0 / (h1 + -h0) : h0 / (h0 + -h1);
+            if (h0 < 0) {
+                window.lo = std::max(window.lo, root - root * 0x1p-50 - 0x1p-1000);  // rising: from t*
+            } else {
+                window.hi = std::min(window.hi, root + root * 0x1p-50 + 0x1p-1000);  // falling: until t*
+            }
+        }
     }
-    return false;
+    return window;
 }
 
 PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_boxes, QueryCache* cache) {
     PairOutcome out;
     if (m.self && std::is_permutation(m.ia.begin(), m.ia.end(), m.ib.begin())) return out;  // the same triangle
-    if (apart_on_an_axis(m)) return out;
+    // The cheapest filter first: the times the boxes can meet (none: apart). Two triangles of
+    // one object sharing a vertex always meet there: the whole interval.
+    const bool sharing = m.self && (shares(m.ib, m.ia[0]) || shares(m.ib, m.ia[1]) || shares(m.ib, m.ia[2]));
+    const OverlapWindow window = sharing ? OverlapWindow{} : overlap_window(m);
+    if (window.empty()) return out;
     double largest = 0;
     for (int i = 0; i < 3; ++i) {
         for (int end = 0; end < 2; ++end) largest = std::max({largest, m.a[i][end].cwiseAbs().maxCoeff(), m.b[i][end].cwiseAbs().maxCoeff()});
     }
-    const bool sharing = m.self && (shares(m.ib, m.ia[0]) || shares(m.ib, m.ia[1]) || shares(m.ib, m.ia[2]));
     // In one plane the planes' sides are zero and the fixed directions seldom part a pair (on
     // dense coplanar contact they cost more than they saved): the planar queries decide. The
     // plane's common case (one coordinate shared) is asked first; the general exact test only
@@ -278,16 +314,20 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
     }
     if (!sharing && plane_axis < 0) plane_axis = coplanar_motion(m);
     const bool planar = plane_axis >= 0;
-    // The features' boxes over [0, config.t_max]: over the whole interval, then, once a
-    // contact is known, only up to it (only an earlier contact matters then; on data set A
-    // 30% of the queries asked after a contact have features apart until it).
+    // The features' boxes over the window's times up to config.t_max: the whole window,
+    // then, once a contact is known, only up to it (only an earlier contact matters then; on
+    // data set A 30% of the queries asked after a contact have features apart until it).
+    // Outside the window the triangles are apart, so a query whose features these boxes part
+    // has no contact to find (the queries themselves still search the whole interval up to
+    // t_max: a stored result is the whole interval's).
     Bounds face_a, face_b;
     std::array<Bounds, 3> point_a, point_b;
     const auto fit_bounds = [&](double until) {
         face_a = face_b = Bounds{};
+        until = std::min(until, window.hi);
         for (int i = 0; i < 3; ++i) {
-            point_a[i] = Bounds::of(m.a[i], until, largest);
-            point_b[i] = Bounds::of(m.b[i], until, largest);
+            point_a[i] = Bounds::of(m.a[i], window.lo, until, largest);
+            point_b[i] = Bounds::of(m.b[i], window.lo, until, largest);
             face_a.grow(point_a[i]);
             face_b.grow(point_b[i]);
         }

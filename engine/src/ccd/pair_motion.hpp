@@ -33,10 +33,20 @@ struct PairOutcome {
     std::uint64_t boxes = 0;     ///< boxes of their solutions (a stored one's counted again)
 };
 
-/// Whether the two triangles stay apart along a coordinate axis throughout the interval
-/// because the same one is below the other along it at both ends (exact: comparisons of the
-/// coordinates). test_pair's first filter; their swept boxes can still overlap.
-bool apart_on_an_axis(const PairMotion& motion);
+/// The times when the two triangles' boxes may overlap: [lo, hi] within [0, 1], empty when
+/// lo > hi. Each triangle's box at time t lies within the box whose bounds move linearly
+/// between its boxes at both ends (a coordinate's minimum over the corners is at least the
+/// interpolation of its minima at the ends), so outside the window some axis parts those
+/// boxes, and the triangles with them: no contact. The gaps' roots are rounded outward, so the
+/// window holds every time the exact boxes meet. Empty wherever one triangle lies below the
+/// other along an axis at both ends (their swept boxes can still overlap: two triangles flying
+/// side by side), and also where different axes part the pair at different times. test_pair's
+/// first filter; it never parts a pair whose boxes meet at some time.
+struct OverlapWindow {
+    double lo = 0, hi = 1;
+    bool empty() const { return lo > hi; }
+};
+OverlapWindow overlap_window(const PairMotion& motion);
 
 /// Whether the pair touches during the interval, and from when. Of one object (`self`),
 /// features that share a vertex index are not queried and the ends use the self rule. With
