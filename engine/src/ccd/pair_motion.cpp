@@ -333,7 +333,7 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
         }
     };
     fit_bounds(1);
-    double bounds_until = 1;
+    double bounds_until = window.hi;  // the boxes end there: a contact after it changes nothing
     QueryConfig config{tolerance, 1, max_boxes};
     // Once a query has found contact, the others only ask whether there is an earlier one, on
     // a smaller budget: spent, its earliest time not excluded becomes the pair's toi (still a
