@@ -18,9 +18,17 @@
 #include <algorithm>
 #include <cstdio>
 #include <random>
+#include <tuple>
+#include <utility>
 
 namespace collidescope::ccd {
 namespace {
+
+// A triangle's lowest and highest coordinate along axis k at one end.
+std::pair<double, double> axis_range(const std::array<Path, 3>& t, int end, int k) {
+    const auto [lo, hi] = std::minmax({t[0][end][k], t[1][end][k], t[2][end][k]});
+    return {lo, hi};
+}
 
 // The slow obvious case of an empty overlap window: along some axis, the same triangle lies
 // strictly below the other at both ends (comparisons of the coordinates, exact).
@@ -28,10 +36,8 @@ bool apart_on_an_axis(const PairMotion& m) {
     for (int k = 0; k < 3; ++k) {
         bool a_below = true, b_below = true;
         for (int end = 0; end < 2; ++end) {
-            const double a_lo = std::min({m.a[0][end][k], m.a[1][end][k], m.a[2][end][k]});
-            const double a_hi = std::max({m.a[0][end][k], m.a[1][end][k], m.a[2][end][k]});
-            const double b_lo = std::min({m.b[0][end][k], m.b[1][end][k], m.b[2][end][k]});
-            const double b_hi = std::max({m.b[0][end][k], m.b[1][end][k], m.b[2][end][k]});
+            const auto [a_lo, a_hi] = axis_range(m.a, end, k);
+            const auto [b_lo, b_hi] = axis_range(m.b, end, k);
             a_below = a_below && a_hi < b_lo;
             b_below = b_below && b_hi < a_lo;
         }
@@ -338,10 +344,8 @@ TEST(PairMotion, TheOverlapWindowHoldsEveryTimeTheBoxesMeet) {
             for (int k = 0; k < 3; ++k) {
                 std::array<double, 2> a_lo, a_hi, b_lo, b_hi;
                 for (int end = 0; end < 2; ++end) {
-                    a_lo[end] = std::min({m.a[0][end][k], m.a[1][end][k], m.a[2][end][k]});
-                    a_hi[end] = std::max({m.a[0][end][k], m.a[1][end][k], m.a[2][end][k]});
-                    b_lo[end] = std::min({m.b[0][end][k], m.b[1][end][k], m.b[2][end][k]});
-                    b_hi[end] = std::max({m.b[0][end][k], m.b[1][end][k], m.b[2][end][k]});
+                    std::tie(a_lo[end], a_hi[end]) = axis_range(m.a, end, k);
+                    std::tie(b_lo[end], b_hi[end]) = axis_range(m.b, end, k);
                 }
                 const auto gap = [](double top, double bottom) -> mpq_class { return mpq_class(top) - mpq_class(bottom); };
                 for (const auto& [g0, g1] : {std::pair{gap(a_hi[0], b_lo[0]), gap(a_hi[1], b_lo[1])},
