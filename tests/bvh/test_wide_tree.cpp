@@ -10,6 +10,7 @@
 #include "bvh/bvh.hpp"
 #include "bvh/traverse.hpp"
 #include "bvh/wide_tree.hpp"
+#include "geometry/float32.hpp"
 
 #include <gtest/gtest.h>
 
@@ -48,8 +49,8 @@ TEST(WideTree, RoundingBracketsEveryDouble) {
         const float nearest = static_cast<float>(v);
         const float below = static_cast<double>(nearest) > v ? std::nextafter(nearest, -k_inf) : nearest;
         const float above = static_cast<double>(nearest) < v ? std::nextafter(nearest, k_inf) : nearest;
-        ASSERT_EQ(exact_round_down(v), below) << std::hexfloat << v;
-        ASSERT_EQ(exact_round_up(v), above) << std::hexfloat << v;
+        ASSERT_EQ(float32_below(v), below) << std::hexfloat << v;
+        ASSERT_EQ(float32_above(v), above) << std::hexfloat << v;
     }
     EXPECT_EQ(round_down(std::numeric_limits<double>::infinity()), k_inf);
     EXPECT_EQ(round_up(-std::numeric_limits<double>::infinity()), -k_inf);

@@ -1,4 +1,5 @@
-// round_to_float32 and is_float32 (engine/src/geometry/float32.cpp), checked against values
+// round_to_float32, is_float32, float32_below and float32_above (engine/src/geometry/float32.cpp),
+// checked against values
 // written in hexadecimal, so no conversion in this file can hide a wrong rounding. The
 // generator pattern (three neighbouring round trips filling one Vec3) is the one GCC 12.2's
 // SLP vectorizer miscompiled when it was written inline (docs/how-to/toolchain.md).
@@ -6,6 +7,7 @@
 #include "support/random_triangles.hpp"
 
 #include "collidescope/types.hpp"
+#include "geometry/float32.hpp"
 
 #include <gtest/gtest.h>
 
@@ -45,6 +47,39 @@ TEST(Float32, NeighbouringRoundTripsInOneVectorAllRound) {
             ASSERT_TRUE(is_float32(p[k]));
         }
     }
+}
+
+TEST(Float32, BelowAndAboveAreTheFloatsOnEachSide) {
+    // The shape GCC 12.2 miscompiled inline: neighbouring round trips filling one struct.
+    struct Bounds {
+        double lo[3], hi[3];
+    };
+    const Bounds b{{float32_below(0.1), float32_below(0.2), float32_below(-0.3)},
+                   {float32_above(0.1), float32_above(0.2), float32_above(-0.3)}};
+    EXPECT_EQ(b.lo[0], 0x1.999998p-4);  // 0.1 = 0x1.999999999999ap-4: nearest 0x1.99999ap-4 is above
+    EXPECT_EQ(b.hi[0], 0x1.99999ap-4);
+    EXPECT_EQ(b.lo[1], 0x1.999998p-3);
+    EXPECT_EQ(b.hi[1], 0x1.99999ap-3);
+    EXPECT_EQ(b.lo[2], -0x1.333334p-2);  // -0.3 = -0x1.3333333333333p-2
+    EXPECT_EQ(b.hi[2], -0x1.333332p-2);
+    // A float32 is its own bound on both sides; zero's sign is kept.
+    EXPECT_EQ(float32_below(0x1.99999ap-4), 0x1.99999ap-4);
+    EXPECT_EQ(float32_above(-0.5), -0.5);
+    EXPECT_EQ(float32_below(0.0), 0.0);
+    EXPECT_TRUE(std::signbit(float32_above(-0.0)));
+    // Below the smallest subnormal, past the largest float, infinities and NaN.
+    EXPECT_EQ(float32_below(1e-50), 0.0);
+    EXPECT_EQ(float32_above(1e-50), 0x1.0p-149);
+    EXPECT_EQ(float32_below(-1e-50), -0x1.0p-149);
+    EXPECT_EQ(float32_above(-1e-50), 0.0);
+    EXPECT_EQ(float32_below(1e300), 0x1.fffffep127);
+    EXPECT_EQ(float32_above(1e300), std::numeric_limits<double>::infinity());
+    EXPECT_EQ(float32_below(-1e300), -std::numeric_limits<double>::infinity());
+    EXPECT_EQ(float32_above(-1e300), -0x1.fffffep127);
+    EXPECT_EQ(float32_below(std::numeric_limits<double>::infinity()), std::numeric_limits<double>::infinity());
+    EXPECT_EQ(float32_above(-std::numeric_limits<double>::infinity()), -std::numeric_limits<double>::infinity());
+    EXPECT_TRUE(std::isnan(float32_below(std::nan(""))));
+    EXPECT_TRUE(std::isnan(float32_above(std::nan(""))));
 }
 
 TEST(Float32, IsFloat32) {

@@ -11,9 +11,9 @@
 // The candidates are exactly the binary traversal's.
 
 #include "collidescope/large_blocks.hpp"
+#include "geometry/float32.hpp"
 
 #include <array>
-#include <bit>
 #include <limits>
 #include <cstdint>
 #include <vector>
@@ -93,34 +93,17 @@ void prepare_wide(Tree& tree);
 /// its first fit is fitted here.
 void fit_wide(Tree& tree);
 
-/// The largest float not above `value`, and the smallest not below it (exact_round_up).
-inline float exact_round_down(double value) {
-    const auto f = static_cast<float>(value);
-    if (!(static_cast<double>(f) > value)) return f;
-    if (f == 0) return -std::numeric_limits<float>::denorm_min();
-    const auto bits = std::bit_cast<std::uint32_t>(f);
-    return std::bit_cast<float>(f > 0 ? bits - 1 : bits + 1);  // +inf steps to the largest float
-}
-
-inline float exact_round_up(double value) {
-    const auto f = static_cast<float>(value);
-    if (!(static_cast<double>(f) < value)) return f;
-    if (f == 0) return std::numeric_limits<float>::denorm_min();
-    const auto bits = std::bit_cast<std::uint32_t>(f);
-    return std::bit_cast<float>(f > 0 ? bits + 1 : bits - 1);  // -inf steps to the lowest float
-}
-
 /// A float not above `value`, within a few float steps of it: the value moved down by 2^-22
 /// of itself (plus 2^-147) before the conversion, which rounds by at most half a float step
 /// (2^-24 relative, 2^-150 absolute below the normal range), so the result never exceeds
-/// `value`. No branch on the rounding direction: exact_round_down's branch, unpredictable,
+/// `value`. No branch on the rounding direction: float32_below's branch, unpredictable,
 /// made fitting the wide layout cost more than the refit itself. Values beyond float range,
-/// infinities and NaN take the exact path.
+/// infinities and NaN take the exact path (float32_below, out of line: geometry/float32.hpp).
 inline float round_down(double value) {
     const double magnitude = value < 0 ? -value : value;
     if (magnitude < 1e38) [[likely]]
         return static_cast<float>(value - magnitude * 0x1p-22 - 0x1p-147);
-    return exact_round_down(value);
+    return float32_below(value);
 }
 
 /// A float not below `value`, within a few float steps of it (round_down's mirror).
@@ -128,7 +111,7 @@ inline float round_up(double value) {
     const double magnitude = value < 0 ? -value : value;
     if (magnitude < 1e38) [[likely]]
         return static_cast<float>(value + magnitude * 0x1p-22 + 0x1p-147);
-    return exact_round_up(value);
+    return float32_above(value);
 }
 
 }  // namespace collidescope::bvh

@@ -1,5 +1,5 @@
 // Rounding doubles to float32: the one place the code base writes the round trip
-// double -> float -> double.
+// double -> float -> double (to the nearest float32, and to the float32 on one side).
 //
 // GCC 12.2's SLP vectorizer (-O2 and -O3) miscompiles that round trip when two of them fill
 // neighbouring doubles: it packs the unconverted inputs into one vector and drops both
@@ -10,7 +10,12 @@
 // never a conversion its own vectorizer could drop. tests/geometry/test_float32.cpp checks
 // the rounding against values written in hexadecimal.
 
+#include "geometry/float32.hpp"
+
 #include "collidescope/types.hpp"
+
+#include <cmath>
+#include <limits>
 
 namespace collidescope {
 
@@ -21,5 +26,17 @@ Vec3 round_to_float32(const Vec3& point) {
 }
 
 bool is_float32(double x) { return round_to_float32(x) == x; }
+
+// The nearest float, stepped once away from x where it lies on the wrong side (std::nextafter
+// from infinity gives the largest finite float; from zero, the smallest subnormal).
+float float32_below(double x) {
+    const auto f = static_cast<float>(x);
+    return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+
+float float32_above(double x) {
+    const auto f = static_cast<float>(x);
+    return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
 
 }  // namespace collidescope

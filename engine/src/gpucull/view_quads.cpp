@@ -2,6 +2,8 @@
 
 #include "gpucull/view_quads.hpp"
 
+#include "geometry/float32.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -24,16 +26,6 @@ Projected project(const View& view, const Vec3& p) {
     const auto scale = [](double e, double to) { return e > 0 ? to / e : 1.0; };
     return {(p[u] - lo[u]) * scale(extent[u], view.width), (p[v] - lo[v]) * scale(extent[v], view.height),
             0.25 + (p[d] - lo[d]) * scale(extent[d], 0.5)};
-}
-
-float round_down(double value) {
-    const auto f = static_cast<float>(value);
-    return static_cast<double>(f) <= value ? f : std::nextafter(f, -std::numeric_limits<float>::infinity());
-}
-
-float round_up(double value) {
-    const auto f = static_cast<float>(value);
-    return static_cast<double>(f) >= value ? f : std::nextafter(f, std::numeric_limits<float>::infinity());
 }
 
 // The edge lines of the projected triangle, unit outward normals. Nearly edge-on (or a segment
@@ -74,8 +66,8 @@ TriangleQuad make_quad(const View& view, const Vec3& p0, const Vec3& p1, const V
     quad.x1 = static_cast<float>(std::floor(std::max({q[0].x, q[1].x, q[2].x}) + k_pixel_slack) + 1);
     quad.y1 = static_cast<float>(std::floor(std::max({q[0].y, q[1].y, q[2].y}) + k_pixel_slack) + 1);
     set_edges(quad, q, std::max(view.width, view.height));
-    quad.zlo = round_down(std::min({q[0].z, q[1].z, q[2].z}));
-    quad.zhi = round_up(std::max({q[0].z, q[1].z, q[2].z}));
+    quad.zlo = float32_below(std::min({q[0].z, q[1].z, q[2].z}));
+    quad.zhi = float32_above(std::max({q[0].z, q[1].z, q[2].z}));
 
     // The plane z = a x + b y + c through the projected corners. Seen nearly edge-on its
     // coefficients are unbounded, and the flat range [zlo, zhi] is the bound instead.
@@ -100,7 +92,7 @@ TriangleQuad make_quad(const View& view, const Vec3& p0, const Vec3& p1, const V
     // the double computation above (relative 1e-10 at most, given the area test): 5e-7 is
     // about 8 ulps of the largest term; 1e-6 absolute covers the rest.
     const double magnitude = std::abs(a) * (view.width + 2.0) + std::abs(b) * (view.height + 2.0) + std::abs(c) + 1.0;
-    quad.margin = round_up(1e-6 + 5e-7 * magnitude);
+    quad.margin = float32_above(1e-6 + 5e-7 * magnitude);
     return quad;
 }
 
