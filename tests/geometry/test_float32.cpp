@@ -66,12 +66,14 @@ TEST(Float32, BelowAndAboveAreTheFloatsOnEachSide) {
     EXPECT_EQ(float32_below(0x1.99999ap-4), 0x1.99999ap-4);
     EXPECT_EQ(float32_above(-0.5), -0.5);
     EXPECT_EQ(float32_below(0.0), 0.0);
+    EXPECT_FALSE(std::signbit(float32_below(0.0)));
     EXPECT_TRUE(std::signbit(float32_above(-0.0)));
     // Below the smallest subnormal, past the largest float, infinities and NaN.
     EXPECT_EQ(float32_below(1e-50), 0.0);
     EXPECT_EQ(float32_above(1e-50), 0x1.0p-149);
     EXPECT_EQ(float32_below(-1e-50), -0x1.0p-149);
     EXPECT_EQ(float32_above(-1e-50), 0.0);
+    EXPECT_TRUE(std::signbit(float32_above(-1e-50)));  // -0: the nearest float keeps the sign
     EXPECT_EQ(float32_below(1e300), 0x1.fffffep127);
     EXPECT_EQ(float32_above(1e300), std::numeric_limits<double>::infinity());
     EXPECT_EQ(float32_below(-1e300), -std::numeric_limits<double>::infinity());

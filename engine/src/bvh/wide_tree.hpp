@@ -96,8 +96,9 @@ void fit_wide(Tree& tree);
 /// A float not above `value`, within a few float steps of it: the value moved down by 2^-22
 /// of itself (plus 2^-147) before the conversion, which rounds by at most half a float step
 /// (2^-24 relative, 2^-150 absolute below the normal range), so the result never exceeds
-/// `value`. No branch on the rounding direction: float32_below's branch, unpredictable,
-/// made fitting the wide layout cost more than the refit itself. Values beyond float range,
+/// `value`. No branch on the rounding direction: an exact rounding's branch on it (as in
+/// float32_below), inline and unpredictable, made fitting the wide layout cost more than the
+/// refit itself. Values beyond float range,
 /// infinities and NaN take the exact path (float32_below, out of line: geometry/float32.hpp).
 inline float round_down(double value) {
     const double magnitude = value < 0 ? -value : value;
