@@ -269,6 +269,40 @@ TEST(BetweenFrames, UnfitCoordinatesAreNamedAndTheToleranceSpansBothFrames) {
     EXPECT_DOUBLE_EQ(between_frames_reference(from, to, {}).stats.tolerance, 4e-6);
 }
 
+// A triangle of a soup moving linearly: at frame f its corners are centre + f velocity + corner.
+struct MovingTriangle {
+    Vec3 centre, velocity;
+    std::array<Vec3, 3> corners;
+};
+
+// The frames of soups of moving triangles (objects "soup0", "soup1", ...), each triangle with
+// three vertices of its own; with the source their data come from.
+struct SoupFrames {
+    std::shared_ptr<FrameSource> source;
+    std::vector<Frame> frames;
+};
+
+SoupFrames soup_frames(const std::vector<std::vector<MovingTriangle>>& soups, int frame_count) {
+    std::vector<std::string> names;
+    std::vector<std::vector<MeshData>> by_frame(static_cast<std::size_t>(frame_count));
+    for (std::size_t s = 0; s < soups.size(); ++s) {
+        names.push_back("soup" + std::to_string(s));
+        for (int f = 0; f < frame_count; ++f) {
+            MeshData mesh;
+            for (const MovingTriangle& t : soups[s]) {
+                const auto v = static_cast<std::uint32_t>(mesh.vertices.size());
+                for (const Vec3& corner : t.corners) mesh.vertices.push_back(t.centre + f * t.velocity + corner);
+                mesh.triangles.push_back({v, v + 1, v + 2});
+            }
+            by_frame[static_cast<std::size_t>(f)].push_back(std::move(mesh));
+        }
+    }
+    SoupFrames out;
+    out.source = make_memory_source(std::move(names), std::move(by_frame));
+    for (int f = 0; f < frame_count; ++f) out.frames.push_back(out.source->frame(static_cast<std::uint32_t>(f)));
+    return out;
+}
+
 // Two soups flying apart and through each other, each triangle along its own direction, so
 // that the swept trees degrade within a few intervals and are built again (the swept build,
 // at the interval after a refit passes its threshold): interval by interval, the reference's
@@ -280,30 +314,19 @@ TEST(BetweenFrames, EqualsTheReferenceAsFlyingSoupsAreBuiltAgain) {
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     const auto random_vector = [&] { return Vec3(unit(rng), unit(rng), unit(rng)); };
     constexpr int k_triangles = 90, k_frames = 12;
-    // Per soup: each triangle's centre, corner offsets and velocity; the two soups start
+    // Per soup: each triangle's centre, velocity and corner offsets; the two soups start
     // overlapping and fly out of a shared cube.
-    std::vector<std::vector<MeshData>> frames(k_frames);
+    std::vector<std::vector<MovingTriangle>> soups(2);
     for (int soup = 0; soup < 2; ++soup) {
-        std::vector<Vec3> centre, velocity;
-        std::vector<std::array<Vec3, 3>> corners;
         for (int t = 0; t < k_triangles; ++t) {
-            centre.push_back(0.5 * random_vector() + Vec3(0.2 * soup, 0, 0));
-            velocity.push_back(0.3 * random_vector());
-            corners.push_back({0.08 * random_vector(), 0.08 * random_vector(), 0.08 * random_vector()});
-        }
-        for (int f = 0; f < k_frames; ++f) {
-            MeshData mesh;
-            for (int t = 0; t < k_triangles; ++t) {
-                for (const Vec3& corner : corners[t]) mesh.vertices.push_back(centre[t] + f * velocity[t] + corner);
-                const auto v = static_cast<std::uint32_t>(3 * t);
-                mesh.triangles.push_back({v, v + 1, v + 2});
-            }
-            frames[f].push_back(std::move(mesh));
+            MovingTriangle& moving = soups[soup].emplace_back();
+            moving.centre = 0.5 * random_vector() + Vec3(0.2 * soup, 0, 0);
+            moving.velocity = 0.3 * random_vector();
+            moving.corners = {0.08 * random_vector(), 0.08 * random_vector(), 0.08 * random_vector()};
         }
     }
-    auto source = make_memory_source({"soup0", "soup1"}, std::move(frames));
-    std::vector<Frame> all;
-    for (int f = 0; f < k_frames; ++f) all.push_back(source->frame(static_cast<std::uint32_t>(f)));
+    const SoupFrames generated = soup_frames(soups, k_frames);
+    const std::vector<Frame>& all = generated.frames;
     std::size_t contacts = 0;
     for (const int threads : {1, 2}) {
         const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
@@ -399,29 +422,18 @@ TEST(BetweenFrames, EqualsTheReferenceOnGridSoupsWithSegmentsAndStillTriangles) 
             return Vec3(x, y, z) / 8.0;
         };
         constexpr int k_triangles = 30, k_frames = 4;
-        std::vector<std::vector<MeshData>> by_frame(k_frames);
+        std::vector<std::vector<MovingTriangle>> soups(2);
         for (int soup = 0; soup < 2; ++soup) {
-            std::vector<Vec3> centre, velocity;
-            std::vector<std::array<Vec3, 3>> corners;
             for (int t = 0; t < k_triangles; ++t) {
-                centre.push_back(0.5 * grid());
-                velocity.push_back(t % 7 == 0 ? Vec3::Zero() : Vec3(0.5 * grid()));
-                corners.push_back({0.25 * grid(), 0.25 * grid(), 0.25 * grid()});
-                if (t % 5 == 0) corners.back()[2] = corners.back()[1];
-            }
-            for (int f = 0; f < k_frames; ++f) {
-                MeshData mesh;
-                for (int t = 0; t < k_triangles; ++t) {
-                    for (const Vec3& c : corners[t]) mesh.vertices.push_back(centre[t] + f * velocity[t] + c + Vec3(offset, 0, 0));
-                    const auto v = static_cast<std::uint32_t>(3 * t);
-                    mesh.triangles.push_back({v, v + 1, v + 2});
-                }
-                by_frame[f].push_back(std::move(mesh));
+                MovingTriangle& moving = soups[soup].emplace_back();
+                moving.centre = 0.5 * grid() + Vec3(offset, 0, 0);  // exact: every coordinate is on a grid of 1/32
+                moving.velocity = t % 7 == 0 ? Vec3::Zero() : Vec3(0.5 * grid());
+                moving.corners = {0.25 * grid(), 0.25 * grid(), 0.25 * grid()};
+                if (t % 5 == 0) moving.corners[2] = moving.corners[1];
             }
         }
-        auto source = make_memory_source({"soup0", "soup1"}, std::move(by_frame));
-        std::vector<Frame> frames;
-        for (int f = 0; f < k_frames; ++f) frames.push_back(source->frame(static_cast<std::uint32_t>(f)));
+        const SoupFrames generated = soup_frames(soups, k_frames);
+        const std::vector<Frame>& frames = generated.frames;
         for (const bool self : {false, true}) {
             BetweenFramesOptions options;
             options.self_collision = self;
