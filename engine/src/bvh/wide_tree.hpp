@@ -98,8 +98,8 @@ void fit_wide(Tree& tree);
 /// (2^-24 relative, 2^-150 absolute below the normal range), so the result never exceeds
 /// `value`. No branch on the rounding direction: an exact rounding's branch on it (as in
 /// float32_below), inline and unpredictable, made fitting the wide layout cost more than the
-/// refit itself. Values beyond float range,
-/// infinities and NaN take the exact path (float32_below, out of line: geometry/float32.hpp).
+/// refit itself. Values beyond float range, infinities and NaN take the exact path
+/// (float32_below, out of line: geometry/float32.hpp).
 inline float round_down(double value) {
     const double magnitude = value < 0 ? -value : value;
     if (magnitude < 1e38) [[likely]]
