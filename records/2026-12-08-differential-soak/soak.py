@@ -1,7 +1,11 @@
 #!/usr/bin/python3
 """Differential soak: adversarial OBJ frame sequences, every per-frame method against brute at
 1 and 2 threads, and between frames against the per-frame brute pairs at both ends and across
-thread counts. Usage: soak.py SEED_FROM SEED_TO [--methods ...]"""
+thread counts.
+
+Usage: soak.py SEED_FROM SEED_TO [--kinds N] [--only-kind K]
+  the scene kind is seed % N (N = 10 by default; the logs say which N made them: kinds were
+  added while the soak ran), or K for every seed with --only-kind."""
 import itertools, os, subprocess, sys, shutil, random
 import numpy as np
 
@@ -42,9 +46,9 @@ def write_obj(path, V, T):
         for t in T:
             f.write("f %d %d %d\n" % (t[0] + 1, t[1] + 1, t[2] + 1))
 
-def make_scene(seed, d):
+def make_scene(seed, d, kinds, only_kind):
     rng = np.random.default_rng(seed)
-    kind = seed % 9
+    kind = only_kind if only_kind is not None else seed % kinds
     frames = 4
     far = [0.0, 1e6, 2.0**30, 1e-3][rng.integers(0, 4)]
     offset = np.array([far, -far / 3, far / 7])
@@ -126,14 +130,17 @@ def make_scene(seed, d):
         objs.append([(small.reshape(-1, 3) + np.array([0, 0, (f - 1) * 1e-4]), np.arange(120).reshape(-1, 3)) for f in range(frames)])
         far_tri = np.array([[3e5, 3e5, 3e5], [3e5 + 1, 3e5, 3e5], [3e5, 3e5 + 1, 3e5]]) + offset
         objs.append([(far_tri, np.array([[0, 1, 2]])) for f in range(frames)])
-    elif kind == 7:  # slivers: long thin triangles crossing near one point
+    elif kind in (7, 9):  # slivers: long thin triangles crossing near one point (9: in one plane)
         for o in range(2):
             seq = []
             tris = []
             for i in range(40):
-                u = rng.normal(size=3); u /= np.linalg.norm(u)
+                u = rng.normal(size=3)
                 w = rng.normal(size=3) * 1e-6
                 p = (rng.random(3) - 0.5) * 0.01
+                if kind == 9:  # all in the plane z = 0: coplanar slivers crossing
+                    u[2] = w[2] = p[2] = 0.0
+                u /= np.linalg.norm(u)
                 tris.append([p - u, p + u, p + w])
             tris = np.array(tris) + offset
             for f in range(frames):
@@ -165,11 +172,12 @@ def run(args):
     return r
 
 def pairs(path):
-    out = set()
+    # a list, in file order: a duplicated or misordered line is a difference too
+    out = []
     with open(path) as f:
         for line in f:
             c = line.split("\t")
-            out.add(tuple(int(x) for x in c[:5]))
+            out.append(tuple(int(x) for x in c[:5]))
     return out
 
 def ccd_pairs(path):
@@ -182,9 +190,15 @@ def ccd_pairs(path):
 
 methods = ["aabb", "gpu", "gpu-naive", "aabb-thesis", "hybrid", "adaptive", "adaptive-thesis", "adaptive-cost"]
 bad = 0
-for seed in range(int(sys.argv[1]), int(sys.argv[2])):
+args = sys.argv[1:]
+kinds, only_kind = 10, None
+if "--kinds" in args:
+    kinds = int(args[args.index("--kinds") + 1])
+if "--only-kind" in args:
+    only_kind = int(args[args.index("--only-kind") + 1])
+for seed in range(int(args[0]), int(args[1])):
     d = os.path.join(ROOT, str(seed)); shutil.rmtree(d, ignore_errors=True); os.makedirs(d)
-    names, kind, far = make_scene(seed, d)
+    names, kind, far = make_scene(seed, d, kinds, only_kind)
     for selfflag in (["--no-self"], ["--self"]):
         ref = os.path.join(d, "brute.tsv")
         r = run(["check"] + names + selfflag + ["--method", "brute", "-q", "--exit-zero", "--pairs", ref])
@@ -199,9 +213,10 @@ for seed in range(int(sys.argv[1]), int(sys.argv[2])):
             got = pairs(out)
             if got != want:
                 bad += 1
-                print("MISMATCH seed %d kind %d far %g %s %s threads %d: missing %d extra %d e.g. %s %s" % (
-                    seed, kind, far, selfflag[0], m, th, len(want - got), len(got - want),
-                    sorted(want - got)[:3], sorted(got - want)[:3]))
+                w, g = set(want), set(got)
+                print("MISMATCH seed %d kind %d far %g %s %s threads %d: missing %d extra %d lines %d/%d e.g. %s %s" % (
+                    seed, kind, far, selfflag[0], m, th, len(w - g), len(g - w), len(want), len(got),
+                    sorted(w - g)[:3], sorted(g - w)[:3]))
         # between frames: ends included, same at 1, 2, 4 threads
         prev = None
         for th in (1, 2, 4):
