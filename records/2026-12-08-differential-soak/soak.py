@@ -39,6 +39,15 @@ def sheet(rng, cells, offset, scale, wave):
             T += [[a, d, e], [a, e, b]]
     return V, np.array(T)
 
+def soup(P):
+    """An (n, 3, 3) array of triangle corners as a mesh: vertices, and triangles of their own."""
+    V = P.reshape(-1, 3)
+    return V, np.arange(len(V)).reshape(-1, 3)
+
+def moving(tris, step, frames):
+    """The frames of triangles translated by `step` a frame."""
+    return [soup(tris + step * f) for f in range(frames)]
+
 def write_obj(path, V, T):
     with open(path, "w") as f:
         for v in V:
@@ -57,13 +66,8 @@ def make_scene(seed, d, kinds, only_kind):
         for o in range(3):
             tris = grid_soup(rng, 40, offset, 1.0)
             step = rng.integers(-2, 3, size=3) / 8.0
-            seq = []
-            for f in range(frames):
-                P = tris + step * f
-                V = P.reshape(-1, 3); T = np.arange(len(V)).reshape(-1, 3)
-                seq.append((V, T))
-            objs.append(seq)
-    elif kind == 1:  # coplanar sheets sliding in plane, one rotated copy
+            objs.append(moving(tris, step, frames))
+    elif kind == 1:  # coplanar sheets sliding in their plane
         for o in range(2):
             V, T = sheet(rng, 8, offset, 1.0, 0.0)
             seq = []
@@ -97,9 +101,7 @@ def make_scene(seed, d, kinds, only_kind):
                         P[i, 0] = a + s_ * (b - a) + t_ * (c - a)
                         if rng.random() < 0.3:
                             P[i, 1] = a + (b - a) * rng.random()
-                P = P + 0.0
-                V = P.reshape(-1, 3); T = np.arange(len(V)).reshape(-1, 3)
-                seq.append((V, T))
+                seq.append(soup(P))
             objs.append(seq)
             # move object 0 a little per frame for the next object's frames
             if o == 0:
@@ -109,12 +111,7 @@ def make_scene(seed, d, kinds, only_kind):
             c = rng.integers(0, 4, size=3) / 4.0
             tri = (rng.integers(0, 3, size=(2, 3, 3)) / 4.0) + c + offset
             step = rng.integers(-1, 2, size=3) / 16.0
-            seq = []
-            for f in range(frames):
-                P = tri + step * f
-                V = P.reshape(-1, 3); T = np.arange(len(V)).reshape(-1, 3)
-                seq.append((V, T))
-            objs.append(seq)
+            objs.append(moving(tri, step, frames))
     elif kind == 6:  # a huge flat sheet at z = 0 and tiny triangles on it, a far object widening the scene
         V, T = sheet(rng, 4, offset + np.array([-5e3, -5e3, 0]), 1e4, 0.0)
         objs.append([(V, T) for f in range(frames)])

@@ -1,8 +1,7 @@
 // round_to_float32, is_float32, float32_below and float32_above (engine/src/geometry/float32.cpp),
 // checked against values written in hexadecimal, so no conversion in this file can hide a wrong
-// rounding. The
-// generator pattern (three neighbouring round trips filling one Vec3) is the one GCC 12.2's
-// SLP vectorizer miscompiled when it was written inline (docs/how-to/toolchain.md).
+// rounding. The generator pattern (three neighbouring round trips filling one Vec3) is the one
+// GCC 12.2's SLP vectorizer miscompiled when it was written inline (docs/how-to/toolchain.md).
 
 #include "support/random_triangles.hpp"
 
