@@ -17,6 +17,7 @@
 #include "ccd/interval_checks.hpp"
 #include "ccd/pair_motion.hpp"
 #include "ccd/swept_patches.hpp"
+#include "pipeline/pair_order.hpp"
 #include "stats/stopwatch.hpp"
 
 #include <tbb/enumerable_thread_specific.h>
@@ -390,8 +391,9 @@ IntervalResult BetweenFrames::detect(const Frame& from, const Frame& to) {
         stats.primitive_queries += t.queries;
         stats.inclusion_boxes += t.boxes;
     }
-    std::sort(result.contacts.begin(), result.contacts.end(),
-              [](const IntervalContact& a, const IntervalContact& b) { return a.pair < b.pair; });
+    // On TBB's threads when there are many: on coplanar-stack, half a million contacts an
+    // interval, the serial sort was 6% of the time at one thread.
+    sort_by_pair(result.contacts, [](const IntervalContact& c) -> const TrianglePair& { return c.pair; });
     for (const IntervalContact& c : result.contacts) {
         stats.pass_throughs += c.pass_through;
         stats.unresolved += !c.resolved;

@@ -20,41 +20,72 @@
 namespace collidescope::ccd {
 namespace {
 
-struct Bounds {
-    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
-    Vec3 hi = Vec3::Constant(-std::numeric_limits<double>::infinity());
-    void grow(const Bounds& b) {
-        lo = lo.cwiseMin(b.lo);
-        hi = hi.cwiseMax(b.hi);
-    }
-    // The positions of a linearly moving point over [from, until] (within [0, 1]; empty when
-    // from > until): its box at both ends, and where the span is shorter, the box of its
-    // positions at the span's ends, each one computed (unless it is an end of the interval)
-    // and widened by its rounding (fl(p0 + t fl(p1 - p0)) is within about 7u `largest` of
-    // exact for t in [0, 1], `largest` bounding every coordinate's magnitude; 16u largest
-    // covers it, 64 subnormals the products that underflow). Never larger than the whole
-    // interval's box, so a feature pair that box parts stays parted.
-    static Bounds of(const Path& path, double from, double until, double largest) {
-        const Bounds whole{path[0].cwiseMin(path[1]), path[0].cwiseMax(path[1])};
-        if (from <= 0 && until >= 1) [[likely]] return whole;
-        return of_span(path, whole, from, until, largest);
-    }
-    [[gnu::noinline]] static Bounds of_span(const Path& path, const Bounds& whole, double from, double until, double largest) {
-        if (from > until) return {};
+// The boxes of the pair's six corners over a span of times [from, until] within [0, 1] (empty
+// when from > until), and of each triangle's three. A linearly moving point's box: at both
+// ends of the interval, and where the span is shorter, the box of its positions at the span's
+// ends, each one computed (unless it is an end of the interval) and widened by its rounding
+// (fl(p0 + t fl(p1 - p0)) is within about 7u `largest` of exact for t in [0, 1], `largest`
+// bounding every coordinate's magnitude; 16u largest covers it, 64 subnormals the products
+// that underflow). Never larger than the whole interval's box, so a feature pair that box
+// parts stays parted. Plain arrays, one row per axis, each written once per fit: built as
+// boxes of vectors and copied, their stores were most of a fit's time, a sixth of the pair's
+// on coplanar-stack.
+struct FeatureBoxes {
+    std::array<std::array<double, 6>, 3> lo, hi;  ///< [axis][corner]: a's corners 0-2, b's 3-5
+    std::array<std::array<double, 3>, 2> face_lo, face_hi;  ///< [triangle][axis]
+
+    void fit(const PairMotion& m, double from, double until, double largest) {
+        constexpr double k_inf = std::numeric_limits<double>::infinity();
+        const bool whole = from <= 0 && until >= 1;
         const double margin = 16 * std::numeric_limits<double>::epsilon() / 2 * largest + 64 * std::numeric_limits<double>::denorm_min();
-        Bounds span;
-        for (const double t : {from, until}) {
-            if (t <= 0 || t >= 1) {
-                const Vec3& end = path[t <= 0 ? 0 : 1];
-                span.grow({end, end});
-            } else {
-                const Vec3 at = path[0] + t * (path[1] - path[0]);
-                span.grow({at - Vec3::Constant(margin), at + Vec3::Constant(margin)});
+        for (int k = 0; k < 3; ++k) {
+            for (int c = 0; c < 6; ++c) {
+                const Path& path = c < 3 ? m.a[c] : m.b[c - 3];
+                const double p0 = path[0][k], p1 = path[1][k];
+                double low = std::min(p0, p1), high = std::max(p0, p1);
+                if (from > until) {
+                    low = k_inf, high = -k_inf;
+                } else if (!whole) {
+                    const auto at = [&](double t, double& a_lo, double& a_hi) {
+                        if (t <= 0 || t >= 1) {
+                            a_lo = a_hi = t <= 0 ? p0 : p1;
+                        } else {
+                            const double x = p0 + t * (p1 - p0);
+                            a_lo = x - margin, a_hi = x + margin;
+                        }
+                    };
+                    double from_lo, from_hi, until_lo, until_hi;
+                    at(from, from_lo, from_hi);
+                    at(until, until_lo, until_hi);
+                    low = std::max(low, std::min(from_lo, until_lo));
+                    high = std::min(high, std::max(from_hi, until_hi));
+                }
+                lo[k][c] = low;
+                hi[k][c] = high;
+            }
+            for (int t = 0; t < 2; ++t) {
+                face_lo[t][k] = std::min({lo[k][3 * t], lo[k][3 * t + 1], lo[k][3 * t + 2]});
+                face_hi[t][k] = std::max({hi[k][3 * t], hi[k][3 * t + 1], hi[k][3 * t + 2]});
             }
         }
-        return {whole.lo.cwiseMax(span.lo), whole.hi.cwiseMin(span.hi)};
     }
-    bool overlaps(const Bounds& o) const { return (lo.array() <= o.hi.array()).all() && (o.lo.array() <= hi.array()).all(); }
+    /// Whether corner c (0-5) meets the other triangle's box.
+    bool corner_meets_face(int c) const {
+        const int t = c < 3 ? 1 : 0;
+        bool meets = true;
+        for (int k = 0; k < 3; ++k) meets = meets && lo[k][c] <= face_hi[t][k] && face_lo[t][k] <= hi[k][c];
+        return meets;
+    }
+    /// Whether edge (a0, a1) of a meets edge (b0, b1) of b (corner indices 0-2 of each).
+    bool edges_meet(int a0, int a1, int b0, int b1) const {
+        bool meets = true;
+        for (int k = 0; k < 3; ++k) {
+            const double a_lo = std::min(lo[k][a0], lo[k][a1]), a_hi = std::max(hi[k][a0], hi[k][a1]);
+            const double b_lo = std::min(lo[k][3 + b0], lo[k][3 + b1]), b_hi = std::max(hi[k][3 + b0], hi[k][3 + b1]);
+            meets = meets && a_lo <= b_hi && b_lo <= a_hi;
+        }
+        return meets;
+    }
 };
 
 // The exact per-frame test at one end; `planar`: all twelve positions lie in one plane (and
@@ -320,18 +351,8 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
     // Outside the window the triangles are apart, so a query whose features these boxes part
     // has no contact to find (the queries themselves still search the whole interval up to
     // t_max: a stored result is the whole interval's).
-    Bounds face_a, face_b;
-    std::array<Bounds, 3> point_a, point_b;
-    const auto fit_bounds = [&](double until) {
-        face_a = face_b = Bounds{};
-        until = std::min(until, window.hi);
-        for (int i = 0; i < 3; ++i) {
-            point_a[i] = Bounds::of(m.a[i], window.lo, until, largest);
-            point_b[i] = Bounds::of(m.b[i], window.lo, until, largest);
-            face_a.grow(point_a[i]);
-            face_b.grow(point_b[i]);
-        }
-    };
+    FeatureBoxes boxes;
+    const auto fit_bounds = [&](double until) { boxes.fit(m, window.lo, std::min(until, window.hi), largest); };
     fit_bounds(1);
     double bounds_until = window.hi;  // the boxes end there: a contact after it changes nothing
     QueryConfig config{tolerance, 1, max_boxes};
@@ -410,27 +431,22 @@ PairOutcome test_pair(const PairMotion& m, double tolerance, std::uint32_t max_b
     // Each vertex of one against the other's face (not a vertex of that face, for self).
     for (int i = 0; i < 3; ++i) {
         refit_bounds();
-        if (!(m.self && shares(m.ib, m.ia[i])) && point_a[i].overlaps(face_b)) {
+        if (!(m.self && shares(m.ib, m.ia[i])) && boxes.corner_meets_face(i)) {
             record_if(vertex_query(m.object_a, m.ia[i], m.a[i], m.object_b, m.tri_b, m.b));
         }
         refit_bounds();
-        if (!(m.self && shares(m.ia, m.ib[i])) && point_b[i].overlaps(face_a)) {
+        if (!(m.self && shares(m.ia, m.ib[i])) && boxes.corner_meets_face(3 + i)) {
             record_if(vertex_query(m.object_b, m.ib[i], m.b[i], m.object_a, m.tri_a, m.a));
         }
     }
     // Each edge against each edge (not sharing a vertex, for self), unless in one plane.
     for (int i = 0; i < 3 && !planar; ++i) {
         const int i1 = (i + 1) % 3;
-        Bounds edge_a;
         for (int j = 0; j < 3; ++j) {
             const int j1 = (j + 1) % 3;
             if (m.self && (m.ia[i] == m.ib[j] || m.ia[i] == m.ib[j1] || m.ia[i1] == m.ib[j] || m.ia[i1] == m.ib[j1])) continue;
             refit_bounds();
-            edge_a = point_a[i];
-            edge_a.grow(point_a[i1]);
-            Bounds edge_b = point_b[j];
-            edge_b.grow(point_b[j1]);
-            if (edge_a.overlaps(edge_b)) {
+            if (boxes.edges_meet(i, i1, j, j1)) {
                 record_if(edge_query(m.object_a, m.ia[i], m.ia[i1], &m.a[i], &m.a[i1], m.object_b, m.ib[j], m.ib[j1], &m.b[j],
                                      &m.b[j1]));
             }

@@ -2,12 +2,11 @@
 
 #include "collidescope/pipeline.hpp"
 
+#include "pipeline/pair_order.hpp"
 #include "stages/object_level.hpp"
 #include "stats/stopwatch.hpp"
 
 #include <tbb/global_control.h>
-
-#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cassert>
@@ -16,21 +15,11 @@
 namespace collidescope {
 namespace {
 
-/// Sorts pairs in TrianglePair's order: (obj_a, tri_a) then (obj_b, tri_b), each packed into
-/// one 64-bit word (the same order as the member-wise comparison). On TBB's threads when there
-/// are many: with 1.27M coplanar pairs a frame (coplanar-stack:large, 2 threads, the project's
-/// VM) the mean frame fell from 223-234 ms to 186-189 ms.
+/// Sorts pairs in TrianglePair's order, on TBB's threads when there are many: with 1.27M
+/// coplanar pairs a frame (coplanar-stack:large, 2 threads, the project's VM) the mean frame
+/// fell from 223-234 ms to 186-189 ms.
 void sort_pairs(std::vector<TrianglePair>& pairs) {
-    const auto packed_less = [](const TrianglePair& x, const TrianglePair& y) {
-        const std::uint64_t xa = std::uint64_t{x.obj_a} << 32 | x.tri_a, ya = std::uint64_t{y.obj_a} << 32 | y.tri_a;
-        if (xa != ya) return xa < ya;
-        return (std::uint64_t{x.obj_b} << 32 | x.tri_b) < (std::uint64_t{y.obj_b} << 32 | y.tri_b);
-    };
-    if (pairs.size() >= (std::size_t{1} << 15)) {
-        tbb::parallel_sort(pairs.begin(), pairs.end(), packed_less);
-    } else {
-        std::sort(pairs.begin(), pairs.end(), packed_less);
-    }
+    sort_by_pair(pairs, [](const TrianglePair& p) -> const TrianglePair& { return p; });
 }
 
 }  // namespace
