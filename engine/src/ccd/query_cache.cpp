@@ -30,11 +30,13 @@ QueryKey QueryKey::edge_edge(std::uint32_t p_object, std::uint32_t p0, std::uint
 }
 
 std::uint64_t QueryCache::hash(const QueryKey& key) {
+    // The words in pairs, each pair times its own odd constant (independent multiplies, not
+    // a chain of four mixes), then one mix.
     const auto& w = key.words;
-    std::uint64_t h = mix((std::uint64_t{w[0]} << 32 | w[1]) + 0x9e3779b97f4a7c15ull);
-    h = mix(h ^ (std::uint64_t{w[2]} << 32 | w[3]));
-    h = mix(h ^ (std::uint64_t{w[4]} << 32 | w[5]));
-    return mix(h ^ w[6]);
+    const std::uint64_t h = (std::uint64_t{w[0]} << 32 | w[1]) * 0x9e3779b97f4a7c15ull ^
+                            (std::uint64_t{w[2]} << 32 | w[3]) * 0xc2b2ae3d27d4eb4full ^
+                            (std::uint64_t{w[4]} << 32 | w[5]) * 0x165667b19e3779f9ull ^ std::uint64_t{w[6]} * 0xd6e8feb86659fd93ull;
+    return mix(h);
 }
 
 const CachedQuery* QueryCache::find(const QueryKey& key) const {

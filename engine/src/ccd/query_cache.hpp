@@ -20,7 +20,12 @@ namespace collidescope::ccd {
 /// its features, each named by object and vertex or triangle indices.
 struct QueryKey {
     std::array<std::uint32_t, 7> words{};
-    friend bool operator==(const QueryKey&, const QueryKey&) = default;
+    /// Word by word, inline (the defaulted comparison called memcmp).
+    friend bool operator==(const QueryKey& x, const QueryKey& y) {
+        bool same = true;
+        for (std::size_t i = 0; i < x.words.size(); ++i) same = same && x.words[i] == y.words[i];
+        return same;
+    }
 
     /// Vertex `v` of object `vertex_object` against triangle `tri` of `face_object`; `drop`:
     /// the planar form's axis, or -1.
