@@ -17,7 +17,7 @@
 #include "ccd/interval_checks.hpp"
 #include "ccd/pair_motion.hpp"
 #include "ccd/swept_patches.hpp"
-#include "pipeline/pair_order.hpp"
+#include "stages/pair_order.hpp"
 #include "stats/stopwatch.hpp"
 
 #include <tbb/enumerable_thread_specific.h>

@@ -2,8 +2,8 @@
 
 #include "collidescope/pipeline.hpp"
 
-#include "pipeline/pair_order.hpp"
 #include "stages/object_level.hpp"
+#include "stages/pair_order.hpp"
 #include "stats/stopwatch.hpp"
 
 #include <tbb/global_control.h>

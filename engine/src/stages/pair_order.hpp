@@ -1,9 +1,9 @@
 #pragma once
-// TrianglePair's order, fast (engine/src, private): (obj_a, tri_a) then (obj_b, tri_b), each
-// packed into one 64-bit word (the same order as the member-wise comparison), and a sort in
-// that order, on TBB's threads when there are many elements: the per-frame pipeline's pairs
-// and the between-frames contacts, whose pairs are distinct, so the order is one whatever
-// the threads.
+// TrianglePair's order, fast (engine/src/stages, private): (obj_a, tri_a) then (obj_b,
+// tri_b), each packed into one 64-bit word (the same order as the member-wise comparison),
+// and a sort in that order, on TBB's threads when there are many elements: the per-frame
+// pipeline's pairs and the between-frames contacts, whose pairs are distinct, so the order is
+// one whatever the threads.
 
 #include "collidescope/types.hpp"
 
