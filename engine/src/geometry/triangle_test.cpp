@@ -8,7 +8,8 @@
 // points. A plane-side rejection first skips most separated pairs with four orientation
 // signs reused by the edge tests; coplanar pairs (flat cloth, sheets lying on each other)
 // first look for an edge whose line has the other triangle strictly outside, which
-// separates them (the 2D separating axis), before the six edge tests.
+// separates them (the 2D separating axis), or a corner of one inside the other, which they
+// then share, before the six edge tests.
 
 #include "collidescope/geometry.hpp"
 #include "geometry/contact_tests.hpp"
@@ -20,30 +21,43 @@ bool strictly_one_side(const int s[3]) {
     return (s[0] > 0 && s[1] > 0 && s[2] > 0) || (s[0] < 0 && s[1] < 0 && s[2] < 0);
 }
 
-/// Some corner of (b0, b1, b2) on the inner (closed) side of the line through p, q, where
-/// `inner` is the orientation of (p, q, the triangle's third corner).
-bool reaches_edge_line(const Vec3& p, const Vec3& q, int inner, const Vec3& b0, const Vec3& b1, const Vec3& b2,
-                       int drop) {
-    return orient2d(p, q, b0, drop) * inner >= 0 || orient2d(p, q, b1, drop) * inner >= 0 ||
-           orient2d(p, q, b2, drop) * inner >= 0;
+/// What the orientations of coplanar triangles decide before their edges are tested.
+enum class InPlane { Separated, Contained, Undecided };
+
+/// A corner of `b` against the lines of a's edges, where `oa` (not 0) is a's orientation in
+/// the projection dropping `drop`: Separated when one edge's line has all of b strictly on its
+/// outer side (a lies in the closed inner half-plane of each of its edges, so that line parts
+/// them); Contained when a corner of b lies on the closed inner side of all three lines (in the
+/// closed triangle a: they share that point); else Undecided. The nine signs are taken one
+/// line at a time, so a separating first line costs three.
+InPlane corners_against_lines(const Vec3& a0, const Vec3& a1, const Vec3& a2, int oa, const Vec3& b0, const Vec3& b1,
+                              const Vec3& b2, int drop) {
+    const Vec3* a[3] = {&a0, &a1, &a2};
+    bool inside[3] = {true, true, true};
+    for (int i = 0; i < 3; ++i) {
+        const Vec3 &p = *a[i], &q = *a[(i + 1) % 3];
+        const int s0 = orient2d(p, q, b0, drop) * oa, s1 = orient2d(p, q, b1, drop) * oa, s2 = orient2d(p, q, b2, drop) * oa;
+        if (s0 < 0 && s1 < 0 && s2 < 0) return InPlane::Separated;
+        inside[0] = inside[0] && s0 >= 0;
+        inside[1] = inside[1] && s1 >= 0;
+        inside[2] = inside[2] && s2 >= 0;
+    }
+    return inside[0] || inside[1] || inside[2] ? InPlane::Contained : InPlane::Undecided;
 }
 
 /// Coplanar triangles, A non-degenerate in the projection dropping `drop` (so that projection
-/// is one-to-one on their plane): true when the line of an edge of A, or of a non-degenerate
-/// B, has the other triangle strictly on its outer side. A triangle lies in the closed inner
-/// half-plane of each of its edges, so such a line separates them; when none exists they may
-/// still be disjoint, and the edge tests decide.
-bool separated_in_plane(const Vec3& a0, const Vec3& a1, const Vec3& a2, const Vec3& b0, const Vec3& b1,
+/// is one-to-one on their plane), `oa` its orientation there: the lines of A's edges against
+/// B's corners, then (for a non-degenerate B) the lines of B's edges against A's. Undecided
+/// pairs (disjoint, or overlapping with no corner of one in the other) go to the edge tests.
+/// The containment answer spares those tests most overlapping pairs (sheets sliding on each
+/// other), which the separating lines alone left to them.
+InPlane decide_in_plane(const Vec3& a0, const Vec3& a1, const Vec3& a2, int oa, const Vec3& b0, const Vec3& b1,
                         const Vec3& b2, int drop) {
-    const int oa = orient2d(a0, a1, a2, drop);
-    if (!reaches_edge_line(a0, a1, oa, b0, b1, b2, drop) || !reaches_edge_line(a1, a2, oa, b0, b1, b2, drop) ||
-        !reaches_edge_line(a2, a0, oa, b0, b1, b2, drop)) {
-        return true;
-    }
+    const InPlane by_a = corners_against_lines(a0, a1, a2, oa, b0, b1, b2, drop);
+    if (by_a != InPlane::Undecided) return by_a;
     const int ob = orient2d(b0, b1, b2, drop);
-    if (ob == 0) return false;
-    return !reaches_edge_line(b0, b1, ob, a0, a1, a2, drop) || !reaches_edge_line(b1, b2, ob, a0, a1, a2, drop) ||
-           !reaches_edge_line(b2, b0, ob, a0, a1, a2, drop);
+    if (ob == 0) return InPlane::Undecided;
+    return corners_against_lines(b0, b1, b2, ob, a0, a1, a2, drop);
 }
 
 bool all_zero(const int s[3]) { return s[0] == 0 && s[1] == 0 && s[2] == 0; }
@@ -80,9 +94,15 @@ bool triangles_intersect(const Vec3& a0, const Vec3& a1, const Vec3& a2,
 
 bool coplanar_triangles_intersect(const Vec3& a0, const Vec3& a1, const Vec3& a2,
                                   const Vec3& b0, const Vec3& b1, const Vec3& b2) {
-    // Coplanar, or a degenerate triangle: every side is zero.
-    const int drop = contact::projection_axis(a0, a1, a2);
-    if (drop >= 0 && separated_in_plane(a0, a1, a2, b0, b1, b2, drop)) return false;
+    // Coplanar, or a degenerate triangle: every side is zero. A's projection axis: the first
+    // of z, y, x along which it projects to a non-degenerate triangle (contact::projection_axis).
+    for (const int drop : {2, 1, 0}) {
+        const int oa = orient2d(a0, a1, a2, drop);
+        if (oa == 0) continue;
+        const InPlane decided = decide_in_plane(a0, a1, a2, oa, b0, b1, b2, drop);
+        if (decided != InPlane::Undecided) return decided == InPlane::Contained;
+        break;
+    }
     constexpr int zero[3] = {0, 0, 0};
     return edges_meet(a0, a1, a2, zero, b0, b1, b2, zero);
 }
