@@ -131,24 +131,27 @@ TEST(TriangleTest, MatchesRationalReferenceOnNearContactPairs) {
 
 // coplanar_triangles_intersect, the entry for triangles known to share a plane, gives the
 // rational reference's answer (and triangles_intersect's, which takes it for such pairs) on
-// random pairs in three exact planes (z = 0.375, x = -1.25 and the tilted x + 2y + 4z = 1.5),
-// corners on a coarse grid so that touching corners, edges along one another, corners inside
-// the other triangle and flat triangles are common.
-TEST(TriangleTest, CoplanarEntryAgreesWithTheGeneralTest) {
+// random pairs in four exact planes (z = 0.375, x = -1.25, y = -0.625 and the tilted
+// x + 2y + 4z = 1.5: each projection axis is taken), corners on a coarse grid so that touching
+// corners, edges along one another, corners inside the other triangle and flat triangles (of
+// either) are common.
+TEST(TriangleTest, CoplanarEntryAgreesWithTheRationalReference) {
     const std::uint64_t seed = 0xC0F1A7;
     std::mt19937_64 rng(seed);
     std::uniform_int_distribution<int> grid(-8, 8);
     int hits = 0, count = testing::sweep_size(15000);
     for (int n = 0; n < count; ++n) {
-        const int plane = n % 3;
+        const int plane = n % 4;
         const auto corner = [&]() -> Vec3 {
             const double s = grid(rng) / 8.0, r = grid(rng) / 8.0;
             if (plane == 0) return {s, r, 0.375};
             if (plane == 1) return {-1.25, s, r};
+            if (plane == 2) return {s, -0.625, r};
             return {s, r, (1.5 - s - 2 * r) / 4};
         };
         Tri a{corner(), corner(), corner()}, b{corner(), corner(), corner()};
         if (n % 10 == 7) a[2] = a[0] + 0.5 * (a[1] - a[0]);  // flat: a corner on the opposite edge's midpoint
+        if (n % 10 == 3) b[2] = b[0] + 0.5 * (b[1] - b[0]);
         const bool expected = reference_triangles_intersect(a, b);
         ASSERT_EQ(coplanar_triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2]), expected)
             << "seed " << seed << " case " << n << ": " << describe(a, b);

@@ -47,8 +47,9 @@ InPlane corners_against_lines(const Vec3& a0, const Vec3& a1, const Vec3& a2, in
 
 /// Coplanar triangles, A non-degenerate in the projection dropping `drop` (so that projection
 /// is one-to-one on their plane), `oa` its orientation there: the lines of A's edges against
-/// B's corners, then (for a non-degenerate B) the lines of B's edges against A's. Undecided
-/// pairs (disjoint, or overlapping with no corner of one in the other) go to the edge tests.
+/// B's corners, then (for a B non-degenerate in that projection) the lines of B's edges
+/// against A's. Undecided pairs (disjoint, overlapping with no corner of one in the other, or
+/// B degenerate there with no corner in A) go to the edge tests.
 /// The containment answer spares those tests most overlapping pairs (sheets sliding on each
 /// other), which the separating lines alone left to them.
 InPlane decide_in_plane(const Vec3& a0, const Vec3& a1, const Vec3& a2, int oa, const Vec3& b0, const Vec3& b1,

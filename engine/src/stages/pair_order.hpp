@@ -4,8 +4,9 @@
 // contacts. Where the four indices fit one 64-bit word at the widths the largest of them
 // needs, the sort is bvh's radix sort of those words (each with its element's index, on TBB's
 // threads when there are many), and the elements are then gathered in that order; else a
-// comparison sort. The elements' pairs are distinct, so the order is one whatever the threads
-// or the path.
+// comparison sort. The between-frames contacts' pairs are distinct, and the pipeline's
+// duplicates (unique removes them after) are equal values, so the result is one whatever the
+// threads or the path.
 
 #include "bvh/radix_sort.hpp"
 #include "collidescope/types.hpp"
@@ -28,7 +29,7 @@ inline bool packed_pair_less(const TrianglePair& x, const TrianglePair& y) {
 }
 
 /// Sorts `items` by `pair_of(item)` in TrianglePair's order. On half a million contacts an
-/// interval (coplanar-stack), the comparison sort was 9% of the interval at one thread.
+/// interval (coplanar-stack), the comparison sort was 9% of the samples at one thread.
 template <class T, class PairOf>
 void sort_by_pair(std::vector<T>& items, PairOf pair_of) {
     constexpr std::size_t k_radix_from = 4096;  // below this, a comparison sort (no gather)
