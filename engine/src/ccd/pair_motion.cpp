@@ -35,7 +35,14 @@ struct FeatureBoxes {
     std::array<std::array<double, 3>, 2> face_lo, face_hi;  ///< [triangle][axis]
 
     void fit(const PairMotion& m, double from, double until, double largest) {
-        constexpr double k_inf = std::numeric_limits<double>::infinity();
+        if (from > until) {  // no time: every box empty, so none meets another
+            constexpr double k_inf = std::numeric_limits<double>::infinity();
+            for (auto& row : lo) row.fill(k_inf);
+            for (auto& row : hi) row.fill(-k_inf);
+            for (auto& row : face_lo) row.fill(k_inf);
+            for (auto& row : face_hi) row.fill(-k_inf);
+            return;
+        }
         const bool whole = from <= 0 && until >= 1;
         const double margin = 16 * std::numeric_limits<double>::epsilon() / 2 * largest + 64 * std::numeric_limits<double>::denorm_min();
         for (int k = 0; k < 3; ++k) {
@@ -43,9 +50,7 @@ struct FeatureBoxes {
                 const Path& path = c < 3 ? m.a[c] : m.b[c - 3];
                 const double p0 = path[0][k], p1 = path[1][k];
                 double low = std::min(p0, p1), high = std::max(p0, p1);
-                if (from > until) {
-                    low = k_inf, high = -k_inf;
-                } else if (!whole) {
+                if (!whole) {
                     const auto at = [&](double t, double& a_lo, double& a_hi) {
                         if (t <= 0 || t >= 1) {
                             a_lo = a_hi = t <= 0 ? p0 : p1;
